@@ -1,0 +1,197 @@
+// globe_ellipsoid.glsl: the ellipsoid functions the GPU runs.
+//
+// Written in the common subset of GLSL (>= 1.50) and C++ with GLM (DESIGN.md §9), so this very
+// text is compiled into shaders by the Rendering module and, through vtkGlobeShaderMath.h,
+// into C++ unit tests in float (GPU semantics) and in double. Rules of the subset:
+//   - no swizzles beyond .x/.y/.z/.w; literals carry an f suffix (exact binary values only);
+//   - out-parameters are written GLOBE_OUT(type); no arrays, no structs;
+//   - every helper starts with globe_ and is free of side effects.
+// Lengths may be in any unit (metres, or units of a radius); each function normalises by the
+// largest radius internally so squares stay in range for 1 mm .. 1e11 m.
+
+// Iteration cap of the geodetic Newton solver; its relative step tolerance comes from the
+// prelude (GLOBE_NEWTON_TOLERANCE): a few ulp of the precision the text is compiled in.
+const int GLOBE_NEWTON_MAX_ITERATIONS = 16;
+
+float globe_maxComponent(vec3 v)
+{
+  return max(v.x, max(v.y, v.z));
+}
+
+float globe_minComponent(vec3 v)
+{
+  return min(v.x, min(v.y, v.z));
+}
+
+// Unit geodetic normal for longitude/latitude in radians.
+vec3 globe_normalFromLonLat(float lon, float lat)
+{
+  float cosLat = cos(lat);
+  return vec3(cosLat * cos(lon), cosLat * sin(lon), sin(lat));
+}
+
+// Longitude in (-pi, pi] and latitude in [-pi/2, pi/2] of a unit normal. atan2 for both:
+// asin loses precision near the poles.
+void globe_lonLatFromNormal(vec3 n, GLOBE_OUT(float) lon, GLOBE_OUT(float) lat)
+{
+  lon = atan(n.y, n.x);
+  lat = atan(n.z, sqrt(n.x * n.x + n.y * n.y));
+}
+
+// Unit normal of the ellipsoid at a point on (or near) its surface: normalize(p / radii^2).
+vec3 globe_geodeticSurfaceNormal(vec3 p, vec3 radii)
+{
+  float unit = globe_maxComponent(radii);
+  vec3 r = radii / unit;
+  return normalize((p / unit) / (r * r));
+}
+
+// The surface point whose geodetic normal is n (unit).
+vec3 globe_surfaceFromNormal(vec3 n, vec3 radii)
+{
+  float unit = globe_maxComponent(radii);
+  vec3 r = radii / unit;
+  vec3 k = r * r * n;
+  return (k * inversesqrt(dot(k, n))) * unit;
+}
+
+vec3 globe_geodeticToCartesian(float lon, float lat, float height, vec3 radii)
+{
+  vec3 n = globe_normalFromLonLat(lon, lat);
+  return globe_surfaceFromNormal(n, radii) + n * height;
+}
+
+// The surface point on the line from the centre through p (Cozzi & Ring, eq. 2.11). The
+// centre itself maps to the end of the shortest axis.
+vec3 globe_scaleToGeocentricSurface(vec3 p, vec3 radii)
+{
+  float unit = globe_maxComponent(radii);
+  vec3 q = (p / unit) / (radii / unit);
+  float q2 = dot(q, q);
+  if (!(q2 > 0.0f))
+  {
+    float rmin = globe_minComponent(radii);
+    return rmin == radii.z ? vec3(0.0f, 0.0f, rmin)
+                           : (rmin == radii.y ? vec3(0.0f, rmin, 0.0f) : vec3(rmin, 0.0f, 0.0f));
+  }
+  return p * inversesqrt(q2);
+}
+
+// The surface point whose geodetic normal passes through p (the nearest one).
+//
+// Cozzi & Ring's Newton iteration (Listing 2.9) solves S(alpha) = sum q_i^2 r_i^2/(r_i^2 +
+// alpha)^2 - 1 = 0, but never returns for (0, 0, 1 m), overshoots past the pole of S at
+// alpha = -min(r)^2 for points inside the body, and in float loses alpha + min(r)^2 to
+// cancellation near the centre. Here the unknown is s = alpha + min(r)^2 > 0 (Eberly's
+// form): G(s) = sum (k_i / (s + d_i))^2 - 1 with k_i = r_i q_i and d_i = r_i^2 - min(r)^2 >= 0,
+// convex and decreasing, bracketed by [lo, hi] with lo = |k| over the shortest axes and
+// hi = |k|. Newton starts from Cozzi's guess clamped into the bracket; after one step it
+// approaches the root from the left, monotonically, and the loop is capped.
+// A point on the plane of the longer axes inside the evolute (lo == 0, G(0) < 0) has its
+// nearest point off that plane, at s = 0, in closed form.
+vec3 globe_scaleToGeodeticSurface(vec3 p, vec3 radii, GLOBE_OUT(int) iterations)
+{
+  float unit = globe_maxComponent(radii);
+  vec3 r = radii / unit;
+  vec3 q = p / unit;
+  vec3 r2 = r * r;
+  float rmin2 = globe_minComponent(r2);
+  vec3 d = r2 - rmin2;
+  vec3 k = r * q;
+  vec3 k2 = k * k;
+  vec3 isShortest = vec3(d.x > 0.0f ? 0.0f : 1.0f, d.y > 0.0f ? 0.0f : 1.0f, d.z > 0.0f ? 0.0f : 1.0f);
+  float lo = sqrt(dot(k2, isShortest));
+  float hi = sqrt(dot(k2, vec3(1.0f, 1.0f, 1.0f)));
+  iterations = 0;
+
+  // One shortest axis (z first: the pole of an oblate body) for the closed forms below.
+  vec3 shortest = isShortest.z > 0.0f ? vec3(0.0f, 0.0f, 1.0f)
+                                      : (isShortest.y > 0.0f ? vec3(0.0f, 1.0f, 0.0f)
+                                                             : vec3(1.0f, 0.0f, 0.0f));
+  if (!(hi > 0.0f))
+  {
+    // The centre: the end of the shortest axis.
+    return r * shortest * unit;
+  }
+  if (!(lo > 0.0f))
+  {
+    // On the plane of the longer axes; inside the evolute the nearest point leaves it.
+    vec3 xde = k / (d + isShortest) * (vec3(1.0f, 1.0f, 1.0f) - isShortest);
+    float discr = 1.0f - dot(xde, xde);
+    if (discr > 0.0f)
+    {
+      return (r * xde + r * shortest * sqrt(discr)) * unit;
+    }
+    // Otherwise the root is in s > 0; keep 0/0 out of the shortest-axis terms.
+    lo = 1e-30f;
+  }
+
+  // Cozzi's initial guess (the geocentric surface point), as s.
+  float beta = inversesqrt(dot(q * q, 1.0f / r2));
+  float alpha0 = (1.0f - beta) * length(q) / (beta * length(q / r2));
+  float s = clamp(rmin2 + alpha0, lo, hi);
+
+  for (int i = 0; i < GLOBE_NEWTON_MAX_ITERATIONS; i++)
+  {
+    iterations = iterations + 1;
+    vec3 e = k / (s + d);
+    vec3 e2 = e * e;
+    float g = e2.x + e2.y + e2.z - 1.0f;
+    vec3 f = e2 / (s + d);
+    float dg = -2.0f * (f.x + f.y + f.z);
+    if (g > 0.0f)
+    {
+      lo = s;
+    }
+    else
+    {
+      hi = s;
+    }
+    float next = dg < 0.0f ? s - g / dg : 0.5f * (lo + hi);
+    next = (next >= lo && next <= hi) ? next : 0.5f * (lo + hi);
+    float step = abs(next - s);
+    s = next;
+    if (!(step > GLOBE_NEWTON_TOLERANCE * s))
+    {
+      break;
+    }
+  }
+  return (r2 * q / (s + d)) * unit;
+}
+
+// Body-fixed Cartesian -> geodetic (radians, height in the unit of p).
+void globe_cartesianToGeodetic(vec3 p, vec3 radii, GLOBE_OUT(float) lon, GLOBE_OUT(float) lat,
+  GLOBE_OUT(float) height)
+{
+  int iterations = 0;
+  vec3 s = globe_scaleToGeodeticSurface(p, radii, iterations);
+  vec3 n = globe_geodeticSurfaceNormal(s, radii);
+  globe_lonLatFromNormal(n, lon, lat);
+  height = dot(p - s, n);
+}
+
+// Ray origin + t * direction against the ellipsoid, in its scaled (unit sphere) space with
+// the stable quadratic formula. Returns the number of hits; t0 <= t1 (t may be negative).
+int globe_intersectEllipsoid(vec3 origin, vec3 direction, vec3 radii, GLOBE_OUT(float) t0,
+  GLOBE_OUT(float) t1)
+{
+  vec3 o = origin / radii;
+  vec3 d = direction / radii;
+  float a = dot(d, d);
+  float b = dot(o, d);
+  float c = dot(o, o) - 1.0f;
+  float disc = b * b - a * c;
+  t0 = 0.0f;
+  t1 = 0.0f;
+  if (!(disc >= 0.0f) || !(a > 0.0f))
+  {
+    return 0;
+  }
+  float root = sqrt(disc);
+  float q = -(b + (b < 0.0f ? -root : root));
+  float ta = q / a;
+  float tb = q != 0.0f ? c / q : ta;
+  t0 = min(ta, tb);
+  t1 = max(ta, tb);
+  return disc > 0.0f ? 2 : 1;
+}

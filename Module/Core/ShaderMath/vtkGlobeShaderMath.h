@@ -1,0 +1,78 @@
+/**
+ * vtkGlobeShaderMath.h: the C++ side of the GLSL/C++ common-subset shader math (DESIGN.md §9).
+ *
+ * Includes the very GLSL text the GPU runs twice, with GLM types:
+ *   vtkGlobeShaderMath::f::globe_...  in float, as the GPU computes it;
+ *   vtkGlobeShaderMath::d::globe_...  in double, the same algorithm without rounding noise.
+ * Tests compare both against the double-precision reference (GeographicLib).
+ * Not installed: it is a test and CPU-mirror aid, not public API.
+ */
+#ifndef vtkGlobeShaderMath_h
+#define vtkGlobeShaderMath_h
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+
+namespace vtkGlobeShaderMath
+{
+namespace f
+{
+using namespace glm;
+#define GLOBE_OUT(T) T&
+#define GLOBE_NEWTON_TOLERANCE 4.8e-7f /* 4 float ulp */
+#include "globe_ellipsoid.glsl"
+#undef GLOBE_NEWTON_TOLERANCE
+#undef GLOBE_OUT
+} // namespace f
+
+namespace d
+{
+using namespace glm;
+using vec2 = glm::dvec2;
+using vec3 = glm::dvec3;
+using vec4 = glm::dvec4;
+// GLSL promotes float literals freely; GLM's templates do not mix double and float.
+inline double max(double a, double b)
+{
+  return a > b ? a : b;
+}
+inline double min(double a, double b)
+{
+  return a < b ? a : b;
+}
+inline double abs(double a)
+{
+  return std::abs(a);
+}
+inline dvec3 operator/(float s, const dvec3& v)
+{
+  return static_cast<double>(s) / v;
+}
+inline dvec3 operator+(float s, const dvec3& v)
+{
+  return static_cast<double>(s) + v;
+}
+inline dvec3 operator*(float s, const dvec3& v)
+{
+  return static_cast<double>(s) * v;
+}
+inline dvec3 operator-(const dvec3& v, float s)
+{
+  return v - static_cast<double>(s);
+}
+inline double clamp(double x, double lo, double hi)
+{
+  return x < lo ? lo : (x > hi ? hi : x);
+}
+#define GLOBE_OUT(T) T&
+#define GLOBE_NEWTON_TOLERANCE 8.9e-16 /* 4 double ulp */
+#define float double
+#include "globe_ellipsoid.glsl"
+#undef float
+#undef GLOBE_NEWTON_TOLERANCE
+#undef GLOBE_OUT
+} // namespace d
+} // namespace vtkGlobeShaderMath
+
+#endif

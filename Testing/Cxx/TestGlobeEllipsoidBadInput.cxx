@@ -1,0 +1,1 @@
+int TestGlobeEllipsoidBadInput(int, char*[]) { return 0; }

@@ -1,0 +1,1 @@
+int TestGlobeGeodeticTransform(int, char*[]) { return 0; }

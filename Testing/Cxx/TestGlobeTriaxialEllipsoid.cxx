@@ -1,0 +1,1 @@
+int TestGlobeTriaxialEllipsoid(int, char*[]) { return 0; }
