@@ -551,8 +551,10 @@ void vtkGlobeEllipsoid::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Name: " << (this->Name ? this->Name : "(custom)") << "\n";
+  const std::streamsize precision = os.precision(12);
   os << indent << "Radii: " << this->Radii[0] << ", " << this->Radii[1] << ", " << this->Radii[2]
      << " m\n";
+  os.precision(precision);
   os << indent << "Shape: "
      << (this->IsSphere() ? "sphere"
                           : (this->IsTriaxial() ? "triaxial"

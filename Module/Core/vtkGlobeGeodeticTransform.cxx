@@ -185,12 +185,10 @@ void vtkGlobeGeodeticTransform::InverseTransformPoint(const float in[3], float o
 void vtkGlobeGeodeticTransform::InverseTransformDerivative(
   const double in[3], double out[3], double derivative[3][3])
 {
-  // The inverse's Jacobian is the inverse of the forward Jacobian at the image point; it
-  // is singular on the polar axis, where longitude is undefined.
+  // vtkWarpTransform's contract: the forward Jacobian at the inverse point, which the base
+  // class inverts. It is singular on the polar axis, where longitude is undefined.
   this->InverseTransformPoint(in, out);
-  double forward[3][3];
-  GeodeticJacobian(this->Ellipsoid->GetRadii(), out, forward);
-  vtkMath::Invert3x3(forward, derivative);
+  GeodeticJacobian(this->Ellipsoid->GetRadii(), out, derivative);
 }
 
 void vtkGlobeGeodeticTransform::InverseTransformDerivative(

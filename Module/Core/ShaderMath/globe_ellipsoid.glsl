@@ -151,7 +151,9 @@ vec3 globe_scaleToGeodeticSurface(vec3 p, vec3 radii, GLOBE_OUT(int) iterations)
     next = (next >= lo && next <= hi) ? next : 0.5f * (lo + hi);
     float step = abs(next - s);
     s = next;
-    if (!(step > GLOBE_NEWTON_TOLERANCE * s))
+    // Converged when the step is a few ulp of s, or when the residual is down to rounding
+    // noise (then s cannot get better: its remaining steps are that noise over dg).
+    if (!(step > GLOBE_NEWTON_TOLERANCE * s) || !(abs(g) > 4.0f * GLOBE_NEWTON_TOLERANCE))
     {
       break;
     }

@@ -16,7 +16,11 @@
 
 namespace vtkGlobeShaderMath
 {
+// The shader functions are not declared inline (GLSL has no such keyword), so each
+// translation unit gets its own internal copy.
 namespace f
+{
+namespace
 {
 using namespace glm;
 #define GLOBE_OUT(T) T&
@@ -24,9 +28,12 @@ using namespace glm;
 #include "globe_ellipsoid.glsl"
 #undef GLOBE_NEWTON_TOLERANCE
 #undef GLOBE_OUT
+} // namespace
 } // namespace f
 
 namespace d
+{
+namespace
 {
 using namespace glm;
 using vec2 = glm::dvec2;
@@ -72,6 +79,7 @@ inline double clamp(double x, double lo, double hi)
 #undef float
 #undef GLOBE_NEWTON_TOLERANCE
 #undef GLOBE_OUT
+} // namespace
 } // namespace d
 } // namespace vtkGlobeShaderMath
 

@@ -1,0 +1,85 @@
+#!/usr/bin/env bash
+# Sets up, builds and runs VTKGlobe on Debian 12. Idempotent: installs only missing packages,
+# configures once, rebuilds only what changed.
+#
+#   Utilities/globe.sh demo [args]    build, then run the main example
+#   Utilities/globe.sh test [args]    build, then run the whole test suite (ctest args pass on)
+#   Utilities/globe.sh build          install packages and build only
+#
+# Environment: VTKGLOBE_BUILD_DIR (default: build/ in the source tree).
+set -euo pipefail
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${VTKGLOBE_BUILD_DIR:-$root/build}"
+command="${1:-}"
+shift || true
+
+# Debian packages: compiler and CMake, VTK 9.1 with Python, GLM, GeographicLib, OpenImageIO,
+# libgeotiff with PROJ's database, and Xvfb + Mesa (llvmpipe) for rendering without a display.
+packages=(
+  cmake g++ make pkg-config
+  libvtk9-dev python3-vtk9
+  libglm-dev libgeographiclib-dev libopenimageio-dev libgeotiff-dev proj-data
+  xvfb xauth x11-utils libgl1-mesa-dri libglx-mesa0 mesa-utils
+)
+
+as_root() {
+  if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi
+}
+
+install_packages() {
+  local missing=()
+  for p in "${packages[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+      missing+=("$p")
+    fi
+  done
+  if [ "${#missing[@]}" -gt 0 ]; then
+    echo "== installing Debian packages: ${missing[*]}"
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  fi
+}
+
+build_project() {
+  if [ ! -f "$build/CMakeCache.txt" ]; then
+    echo "== configuring in $build"
+    cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3
+  fi
+  echo "== building"
+  cmake --build "$build" --parallel "$(nproc)"
+}
+
+# Runs a command with a display: the user's, or a private Xvfb server (Mesa's llvmpipe gives
+# OpenGL 4.5 core there).
+with_display() {
+  if [ -n "${DISPLAY:-}" ] && xdpyinfo >/dev/null 2>&1; then
+    "$@"
+  else
+    xvfb-run -a -s "-screen 0 1280x1024x24" "$@"
+  fi
+}
+
+case "$command" in
+  demo)
+    install_packages
+    build_project
+    echo "== running the demo"
+    with_display "$build/bin/GlobeGeodesy" "$@"
+    ;;
+  test)
+    install_packages
+    build_project
+    echo "== running the tests"
+    cd "$build"
+    with_display ctest --output-on-failure --timeout 900 "$@"
+    ;;
+  build)
+    install_packages
+    build_project
+    ;;
+  *)
+    echo "usage: $0 demo|test|build [args]" >&2
+    exit 2
+    ;;
+esac
