@@ -2,7 +2,7 @@
 # Sets up, builds and runs VTKGlobe on Debian 12. Idempotent: installs only missing packages,
 # configures once, rebuilds only what changed.
 #
-#   Utilities/globe.sh demo [args]    build, then run the main example
+#   Utilities/globe.sh demo [args]    build, then render the Earth (PNGs, or a window)
 #   Utilities/globe.sh test [args]    build, then run the whole test suite (ctest args pass on)
 #   Utilities/globe.sh build          install packages and build only
 #
@@ -65,7 +65,14 @@ case "$command" in
     install_packages
     build_project
     echo "== running the demo"
-    with_display "$build/bin/GlobeGeodesy" "$@"
+    if [ -n "${DISPLAY:-}" ] && xdpyinfo >/dev/null 2>&1 && [ -z "${CI:-}" ]; then
+      # A real display: an interactive window (keys 1, 2, 3 switch viewpoints).
+      "$build/bin/GlobeEarth" --interactive "$@"
+    else
+      mkdir -p "$build/demo"
+      with_display "$build/bin/GlobeEarth" --out "$build/demo" "$@"
+      echo "== the pictures are in $build/demo"
+    fi
     ;;
   test)
     install_packages

@@ -123,6 +123,14 @@ inline double Norm(const double a[3])
 {
   return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
 }
+
+/// Angle between two vectors of any length, accurate for tiny angles: atan2(|a x b|, a . b).
+inline double Angle(const double a[3], const double b[3])
+{
+  const double c[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+    a[0] * b[1] - a[1] * b[0] };
+  return std::atan2(Norm(c), a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
+}
 } // namespace vtkGlobeTest
 
 #endif

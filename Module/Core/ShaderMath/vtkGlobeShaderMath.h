@@ -1,7 +1,8 @@
 /**
  * vtkGlobeShaderMath.h: the C++ side of the GLSL/C++ common-subset shader math (DESIGN.md §9).
  *
- * Includes the very GLSL text the GPU runs twice, with GLM types:
+ * Includes the very GLSL text the GPU runs (globe_ellipsoid.glsl, globe_pgm.glsl) twice,
+ * with GLM types:
  *   vtkGlobeShaderMath::f::globe_...  in float, as the GPU computes it;
  *   vtkGlobeShaderMath::d::globe_...  in double, the same algorithm without rounding noise.
  * Tests compare both against the double-precision reference (GeographicLib).
@@ -26,6 +27,7 @@ using namespace glm;
 #define GLOBE_OUT(T) T&
 #define GLOBE_NEWTON_TOLERANCE 4.8e-7f /* 4 float ulp */
 #include "globe_ellipsoid.glsl"
+#include "globe_pgm.glsl"
 #undef GLOBE_NEWTON_TOLERANCE
 #undef GLOBE_OUT
 } // namespace
@@ -72,10 +74,15 @@ inline double clamp(double x, double lo, double hi)
 {
   return x < lo ? lo : (x > hi ? hi : x);
 }
+inline double mix(double a, double b, double t)
+{
+  return a + (b - a) * t;
+}
 #define GLOBE_OUT(T) T&
 #define GLOBE_NEWTON_TOLERANCE 8.9e-16 /* 4 double ulp */
 #define float double
 #include "globe_ellipsoid.glsl"
+#include "globe_pgm.glsl"
 #undef float
 #undef GLOBE_NEWTON_TOLERANCE
 #undef GLOBE_OUT

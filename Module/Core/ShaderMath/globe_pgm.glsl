@@ -1,0 +1,128 @@
+// globe_pgm.glsl: spherical Projective Grid Mapping (Mahsman 2010, with the corrections of
+// DESIGN.md §5), in the GLSL/C++ common subset (see globe_ellipsoid.glsl for its rules).
+//
+// Everything here lives in the body's scaled space (x/a, y/b, z/c), where the ellipsoid is the
+// unit sphere and the reference "spheres" have radii r near 1. Vectors are eye-relative; the
+// large quantities (distances, altitudes, c - 1) arrive precomputed in double on the CPU.
+//
+// Frame parameters (computed in double by vtkGlobeProjectiveGrid):
+//   nadir        unit vector from the eye to the centre; d the eye's distance from the centre
+//   rP, aP       the primary sphere's radius and the eye's altitude over it, a = d - r (exact)
+//   rS, aS       the same for the secondary sphere (rS <= 0: none)
+//   tau0         asin(r_p / d), the primary tangent angle
+//   blendStart   b = zeta * tau0; past it the secondary ray angle runs from blendStartS to tauS
+//
+// Positions never depend on a transcendental function: GPUs' sin/asin/atan are approximations
+// (GLSL promises no accuracy; llvmpipe's are off by ~1e-4). Trigonometry only decides where the
+// secondary sphere samples, and every vertex is placed consistently with the direction it
+// samples.
+
+// 1 / sqrt(x) to full float precision. GPU inversesqrt() (and normalize(), length(), and
+// v / sqrt(x), which compilers rewrite into it) may be approximations: llvmpipe's has ~12 bits,
+// 2.4e-4, which moved grid directions by 4e-4 rad. One Newton step squares the error away.
+float globe_inverseSqrt(float x)
+{
+  float r = inversesqrt(x);
+  return r * (1.5f - 0.5f * x * r * r);
+}
+
+vec3 globe_normalize(vec3 v)
+{
+  return v * globe_inverseSqrt(dot(v, v));
+}
+
+float globe_length(vec3 v)
+{
+  float x = dot(v, v);
+  return x > 0.0f ? x * globe_inverseSqrt(x) : 0.0f;
+}
+
+// Front-facing hit of a ray with the sphere of radius r seen from distance d, altitude
+// a = d - r (exact), for the ray at cos w / sin w from the nadir (k: the in-plane unit vector
+// perpendicular to the nadir). Cancellation-free forms:
+//   t = a (d + r) / D,  D = d cos w + S,  S = sqrt(r^2 - d^2 sin^2 w)
+//   s = (-(d S + r^2 cos w) nadir + a (d + r) sin w k) / (r D)      (unit, from the centre)
+// Returns false for a miss; past the tangent the tangent point is returned (S = 0), so every
+// value stays finite.
+bool globe_sphereHit(float cosW, float sinW, float d, float r, float a, vec3 nadir, vec3 k,
+  GLOBE_OUT(float) t, GLOBE_OUT(vec3) s)
+{
+  // S^2 = r^2 - d^2 sin^2 w = (d cos w)^2 - a (d + r): the first form cancels near the tangent
+  // (sin w ~ 1 carries an ulp), the second near the nadir; take the one that does not.
+  float ds = d * sinW;
+  float dc = d * cosW;
+  float q = sinW < cosW ? (r - ds) * (r + ds) : dc * dc - a * (d + r);
+  float root = sqrt(max(q, 0.0f));
+  float denominator = dc + root;
+  if (!(denominator > 0.0f))
+  {
+    t = 0.0f;
+    s = -nadir;
+    return false;
+  }
+  t = a * (d + r) / denominator;
+  s = globe_normalize(nadir * (-(d * root + r * r * cosW)) + k * (a * (d + r) * sinW));
+  return q >= 0.0f && cosW > 0.0f;
+}
+
+// One grid point: its ray (unit, scaled space) against the reference spheres. Writes the unit
+// direction from the centre of the sampled point (s) and the point on the primary sphere
+// relative to the eye (p); returns 1 for a hit, 0 for a miss.
+// Before the blend start the point is the exact ray hit, p = t ray. Past it (erratum E2:
+// f = 0 primary only, f = 1 secondary only), the direction is blended with the hit of a
+// secondary ray whose angle runs from blendStartS (erratum E4: where the secondary continues
+// the primary) to the secondary tangent tauS, and p is the primary-sphere point there.
+float globe_pgmGridPoint(vec3 ray, vec3 nadir, vec3 anyPerpendicular, float d, float rP,
+  float aP, float tau0, float blendStart, float rS, float aS, float blendStartS, float tauS,
+  GLOBE_OUT(vec3) s, GLOBE_OUT(vec3) p)
+{
+  float cosW = dot(ray, nadir);
+  vec3 across = ray - nadir * cosW;
+  float sinW = globe_length(across);
+  // A ray along the nadir has no plane of its own: any perpendicular will do (DESIGN.md §8).
+  vec3 k = sinW > 0.0f ? across / sinW : anyPerpendicular;
+  float t = 0.0f;
+  bool hit = globe_sphereHit(cosW, sinW, d, rP, aP, nadir, k, t, s);
+  p = ray * t;
+  if (!hit)
+  {
+    return 0.0f;
+  }
+  if (rS > 0.0f)
+  {
+    float omega = atan(sinW, cosW);
+    if (omega > blendStart)
+    {
+      float f = clamp((omega - blendStart) / (tau0 - blendStart), 0.0f, 1.0f);
+      float omegaS = mix(blendStartS, tauS, f);
+      float tS = 0.0f;
+      vec3 sS = s;
+      globe_sphereHit(cos(omegaS), sin(omegaS), d, rS, aS, nadir, k, tS, sS);
+      s = globe_normalize(mix(s, sS, f));
+      p = s * rP + nadir * d;
+    }
+  }
+  return 1.0f;
+}
+
+// CPU-side helpers (double), used by vtkGlobeProjectiveGrid to set up the blend.
+
+// Normal angle (from the anti-nadir) of the front-facing hit of a ray at angle omega with a
+// sphere seen from c = d / r, cancellation-free:
+//   gamma = asin(c sin w) - w = asin( sin w (c^2 - 1) / (c cos w + sqrt(1 - c^2 sin^2 w)) ).
+float globe_frontNormalAngle(float c, float cMinusOne, float omega)
+{
+  float s = sin(omega);
+  float q = clamp(c * s, -1.0f, 1.0f);
+  float root = sqrt(max(1.0f - q * q, 0.0f));
+  float denominator = c * cos(omega) + root;
+  float x = denominator > 0.0f ? s * cMinusOne * (c + 1.0f) / denominator : 1.0f;
+  return asin(clamp(x, -1.0f, 1.0f));
+}
+
+// The ray angle at which a sphere (c = d / r) is hit with normal angle gamma:
+// tan w = sin g / (c - cos g).
+float globe_rayAngleForNormalAngle(float c, float gamma)
+{
+  return atan(sin(gamma), c - cos(gamma));
+}

@@ -1,0 +1,262 @@
+/**
+ * @class   vtkGlobeLayer
+ * @brief   A georeferenced raster (heights or colour imagery) for the globe mapper.
+ *
+ * A layer is one raster the globe mapper uploads as a texture: a height map (metres) or
+ * colour imagery. It comes from a GeoTIFF file (FileName) or from values given in memory
+ * (SetHeightData, SetColorData). Update() loads it lazily: it re-reads only when the file
+ * name or a setting that changes the data was modified since the last successful load.
+ *
+ * Pixels are read with OpenImageIO, integer rasters in their native type (OpenImageIO's
+ * conversion to float would rescale them to [-1, 1]); georeferencing with libgeotiff
+ * (model type, EPSG code, tie point + pixel scale or transformation matrix, raster type,
+ * ellipsoid keys) and the nodata value from GDAL's GDAL_NODATA tag (42113).
+ *
+ * Output (GetData()): row 0 is the NORTH row, index = row * width + column.
+ * - Height: a 1-component vtkFloatArray of raw * ValueScale + ValueOffset metres. Nodata
+ *   and NaN posts are voids; with FillVoids on (the default) they are filled by a push-pull
+ *   fill (a valid-weighted image pyramid: averages of the valid posts are pulled up to
+ *   coarser levels, then pushed back down into the voids by bilinear interpolation), so a
+ *   void becomes a smooth surface at the level of its surroundings. Every filled value is a
+ *   convex combination of valid values, so the fill never goes above the highest or below
+ *   the lowest valid post. With FillVoids off the voids are NaN: the mapper should give
+ *   them zero coverage so the layer below shows through.
+ * - Color: a 4-component vtkUnsignedCharArray (RGBA). Alpha is the file's alpha channel
+ *   when it has one (straight, not premultiplied), else 255, and 0 where all colour channels
+ *   equal the nodata value. Samples of other types are converted to 8 bits by OpenImageIO.
+ *
+ * Georeferencing: Geographic layers give their pixel-edge box in degrees
+ * (GetGeographicExtent); points-registered rasters (RasterPixelIsPoint) are shifted by half
+ * a pixel so the box is always the outer edge of the pixels. Projected layers are read too
+ * (EPSG code, map origin and pixel size through GetProjectedGeoTransform); whether the
+ * renderer supports a projection is the renderer's decision. Rasters stored south-up are
+ * flipped so row 0 is north; rotated or sheared rasters are refused.
+ *
+ * Every failure (missing file, unreadable or truncated image, no georeferencing, a channel
+ * count that does not fit the role, a raster without any valid post, bad in-memory input)
+ * is reported with vtkErrorMacro naming the file and the reason, and leaves the layer
+ * invalid (IsValid() false, no data kept).
+ */
+#ifndef vtkGlobeLayer_h
+#define vtkGlobeLayer_h
+
+#include "vtkGlobeCoreModule.h" // for export macro
+#include "vtkObject.h"
+#include "vtkWrappingHints.h" // for VTK_SIZEHINT
+
+#include <memory> // for std::unique_ptr
+
+class vtkDataArray;
+
+class VTKGLOBECORE_EXPORT vtkGlobeLayer : public vtkObject
+{
+public:
+  static vtkGlobeLayer* New();
+  vtkTypeMacro(vtkGlobeLayer, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Roles
+  {
+    Height = 0,
+    Color = 1
+  };
+
+  enum ModelTypes
+  {
+    Geographic = 1,
+    Projected = 2
+  };
+
+  ///@{
+  /// What the raster is: Height (default) or Color.
+  vtkSetClampMacro(Role, int, Height, Color);
+  vtkGetMacro(Role, int);
+  void SetRoleToHeight() { this->SetRole(Height); }
+  void SetRoleToColor() { this->SetRole(Color); }
+  const char* GetRoleAsString();
+  ///@}
+
+  ///@{
+  /**
+   * The GeoTIFF file to read. Setting a file name replaces in-memory data given with
+   * SetHeightData / SetColorData.
+   */
+  virtual void SetFileName(const char* fileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  ///@{
+  /**
+   * A display name. When none is set, GetName() gives the file's name without its
+   * directory and last extension ("relief_2deg" for .../relief_2deg.tif), or "" for
+   * in-memory data. Changing it does not cause a re-read.
+   */
+  vtkSetStringMacro(Name);
+  const char* GetName();
+  ///@}
+
+  ///@{
+  /// Height = raw * ValueScale + ValueOffset (Height layers; ignored for Color). Must be finite.
+  vtkSetMacro(ValueScale, double);
+  vtkGetMacro(ValueScale, double);
+  vtkSetMacro(ValueOffset, double);
+  vtkGetMacro(ValueOffset, double);
+  ///@}
+
+  ///@{
+  /**
+   * The raw value that marks missing posts/pixels. By default it comes from the file's
+   * GDAL_NODATA tag (after Update()); setting either value overrides the file's tag until
+   * UseFileNoDataValue() is called. SetNoDataValue() also turns HasNoDataValue on.
+   * NaN heights are voids whatever these say.
+   */
+  virtual void SetNoDataValue(double value);
+  vtkGetMacro(NoDataValue, double);
+  virtual void SetHasNoDataValue(bool has);
+  vtkGetMacro(HasNoDataValue, bool);
+  vtkBooleanMacro(HasNoDataValue, bool);
+  /// Forget the override: use the file's GDAL_NODATA tag again (none for in-memory data).
+  void UseFileNoDataValue();
+  /// True while the nodata value is the user's, not the file's.
+  vtkGetMacro(NoDataValueOverridden, bool);
+  ///@}
+
+  ///@{
+  /// Fill the voids of a Height layer with the push-pull fill (default on).
+  vtkSetMacro(FillVoids, bool);
+  vtkGetMacro(FillVoids, bool);
+  vtkBooleanMacro(FillVoids, bool);
+  ///@}
+
+  /**
+   * (Re)load the layer if the file name, the in-memory data or a setting that changes the
+   * data (role, scale, offset, nodata, fill) was modified since the last successful load,
+   * or if the layer is not valid. Returns IsValid(). On failure reports with vtkErrorMacro
+   * and keeps no data. Changes that do not touch the data (the Name) do not re-read; a
+   * file rewritten on disk under the same name is re-read after Modified().
+   */
+  bool Update();
+
+  /// True after a successful load, until the next failure.
+  bool IsValid() { return this->Valid; }
+
+  /// How many times the data was (re)built from the file or the in-memory values.
+  vtkGetMacro(NumberOfLoads, int);
+
+  ///@{
+  /**
+   * In-memory rasters: the values are copied (width * height * components, row 0 = north)
+   * with their geographic pixel-edge box in degrees, the role is set to match, FileName is
+   * cleared, and the layer is loaded at once as Update() would. Heights may contain NaN
+   * (voids). Errors (size <= 0, no values, components not 3 or 4, west >= east,
+   * south >= north, |latitude| > 90, a span over 360 degrees, non-finite extent) are
+   * reported and leave the layer invalid. From Python, pass a sequence (or buffer) of
+   * exactly width * height (* components) numbers; the wrapper checks the length.
+   */
+  void SetHeightData(int width, int height, const float* values, double west, double east,
+    double south, double north) VTK_SIZEHINT(values, width* height);
+  void SetColorData(int width, int height, int components, const unsigned char* values, double west,
+    double east, double south, double north) VTK_SIZEHINT(values, width* height* components);
+  ///@}
+
+  ///@{
+  /// Raster size of the loaded data (0 when invalid) and its components (1 or 4).
+  int GetWidth() { return this->RasterWidth; }
+  int GetHeight() { return this->RasterHeight; }
+  vtkGetMacro(NumberOfComponents, int);
+  ///@}
+
+  /**
+   * The loaded values (nullptr when invalid): Height, a vtkFloatArray of metres; Color, a
+   * vtkUnsignedCharArray RGBA. Row 0 is the north row.
+   */
+  vtkDataArray* GetData();
+
+  /// Voids: posts (pixels, for Color) that were nodata or NaN, before any fill.
+  vtkGetMacro(NumberOfVoids, vtkIdType);
+
+  ///@{
+  /// Geographic or Projected; 0 when unknown (not loaded).
+  vtkGetMacro(ModelType, int);
+  /// The geographic (GCS) or projected (PCS) EPSG code; 0 if user-defined or unknown.
+  vtkGetMacro(EPSG, int);
+  ///@}
+
+  /**
+   * West, east, south, north in degrees: the box around the outer pixel edges. Geographic
+   * layers only (NaN for Projected or invalid layers).
+   */
+  void GetGeographicExtent(double extent[4]);
+
+  /**
+   * Map coordinates of the top-left (north-west) pixel corner and the pixel size (x: east,
+   * y: south, both positive), in the model's units: metres for the usual projected systems,
+   * degrees for Geographic layers. NaN when invalid.
+   */
+  void GetProjectedGeoTransform(double origin[2], double pixelSize[2]);
+
+  ///@{
+  /**
+   * The datum's ellipsoid from the file's GeogSemiMajorAxis / GeogSemiMinorAxis /
+   * GeogInvFlattening keys (e.g. the Moon's 1,737,400 m sphere); 0 when the file has no
+   * such keys (e.g. only an EPSG code) or for in-memory data.
+   */
+  vtkGetMacro(DatumSemiMajorAxis, double);
+  vtkGetMacro(DatumSemiMinorAxis, double);
+  ///@}
+
+  ///@{
+  /// Range of the valid (non-void) heights after scale and offset; 0 for Color or invalid.
+  vtkGetMacro(MinimumValue, double);
+  vtkGetMacro(MaximumValue, double);
+  ///@}
+
+  /// A Geographic layer whose extent spans 360 degrees of longitude.
+  bool IsGlobal();
+
+  /// Degrees per pixel along x (axis 0) or y (axis 1); Geographic layers only, else NaN.
+  double GetDegreesPerPixel(int axis);
+
+protected:
+  vtkGlobeLayer();
+  ~vtkGlobeLayer() override;
+
+  // Settings.
+  int Role = Height;
+  char* FileName = nullptr;
+  char* Name = nullptr;
+  double ValueScale = 1.0;
+  double ValueOffset = 0.0;
+  double NoDataValue = 0.0;
+  bool HasNoDataValue = false;
+  bool NoDataValueOverridden = false;
+  bool FillVoids = true;
+
+  // Results of the last load.
+  bool Valid = false;
+  int NumberOfLoads = 0;
+  int RasterWidth = 0; // not Width/Height: Height is a Roles value
+  int RasterHeight = 0;
+  int NumberOfComponents = 0;
+  vtkIdType NumberOfVoids = 0;
+  int ModelType = 0;
+  int EPSG = 0;
+  double DatumSemiMajorAxis = 0.0;
+  double DatumSemiMinorAxis = 0.0;
+  double MinimumValue = 0.0;
+  double MaximumValue = 0.0;
+
+private:
+  vtkGlobeLayer(const vtkGlobeLayer&) = delete;
+  void operator=(const vtkGlobeLayer&) = delete;
+
+  bool Load();
+  bool LoadFile();
+  bool LoadMemory();
+  void Invalidate();
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

@@ -1,0 +1,16 @@
+//VTK::System::Dec
+//VTK::Output::Dec
+// Rasterization: writes the G-buffer (direction and height per pixel) and depth. Directions are
+// interpolated, never longitudes (no 0/360 degree seam).
+in vec4 globeDirectionHeight;
+in float globeValid;
+
+void main()
+{
+  // A triangle touching a grid point whose ray missed the body is dropped.
+  if (globeValid < 0.9999)
+  {
+    discard;
+  }
+  gl_FragData[0] = globeDirectionHeight;
+}

@@ -1,0 +1,669 @@
+#include "vtkGlobeMapper.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkGlobeCompositePass.h"
+#include "vtkGlobeEllipsoid.h"
+#include "vtkGlobeGridPass.h"
+#include "vtkGlobeLayer.h"
+#include "vtkGlobeLayerSet.h"
+#include "vtkGlobeProjectiveGrid.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderTimer.h"
+#include "vtkOpenGLRenderUtilities.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include "vtkGlobeRasterFS.h"
+#include "vtkGlobeRasterVS.h"
+#include "vtkGlobeReductionFS.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkGlobeMapper);
+
+class vtkGlobeMapper::vtkInternals
+{
+public:
+  vtkSmartPointer<vtkGlobeEllipsoid> Ellipsoid = vtkSmartPointer<vtkGlobeEllipsoid>::New();
+  vtkNew<vtkGlobeLayerSet> Layers;
+  vtkNew<vtkGlobeProjectiveGrid> Grid;
+  vtkNew<vtkGlobeGridPass> GridPass;
+  vtkNew<vtkGlobeCompositePass> Composite;
+
+  // G-buffer: direction + height, and depth.
+  vtkSmartPointer<vtkTextureObject> GBuffer;
+  vtkSmartPointer<vtkTextureObject> GDepth;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> GFramebuffer;
+
+  // The grid mesh: no vertex attributes, only indices; vertices fetch their grid point.
+  vtkNew<vtkOpenGLVertexArrayObject> VAO;
+  vtkSmartPointer<vtkOpenGLBufferObject> Indices;
+  int IndexResolution = 0;
+  size_t IndexCount = 0;
+
+  // Minimum reduction.
+  std::vector<vtkSmartPointer<vtkTextureObject>> ReductionLevels;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> ReductionFramebuffer;
+  vtkOpenGLQuadHelper* ReductionQuad = nullptr;
+  bool ReductionValid = false;
+  double ReducedHeight = 0.0; // lowest visible terrain of the last frame (m)
+  double ReductionEye[3] = { 0, 0, 0 };
+
+  vtkOpenGLRenderTimer RasterTimer;
+  vtkOpenGLRenderTimer ReductionTimer;
+  std::string ReportedStatus;
+  double Bounds[6] = { -1, 1, -1, 1, -1, 1 };
+
+  ~vtkInternals() { delete this->ReductionQuad; }
+};
+
+//------------------------------------------------------------------------------
+vtkGlobeMapper::vtkGlobeMapper()
+  : Internals(new vtkInternals)
+{
+  // The globe has no polydata input: render without one, and without scalars.
+  this->Static = 1;
+  this->ScalarVisibility = 0;
+  auto& in = *this->Internals;
+  in.Grid->SetEllipsoid(in.Ellipsoid);
+  in.GridPass->SetProjectiveGrid(in.Grid);
+  in.GridPass->SetLayers(in.Layers);
+  in.Composite->SetEllipsoid(in.Ellipsoid);
+  in.Composite->SetLayers(in.Layers);
+}
+
+vtkGlobeMapper::~vtkGlobeMapper() = default;
+
+void vtkGlobeMapper::SetEllipsoid(vtkGlobeEllipsoid* ellipsoid)
+{
+  auto& in = *this->Internals;
+  if (ellipsoid == in.Ellipsoid && ellipsoid)
+  {
+    return;
+  }
+  in.Ellipsoid = ellipsoid ? ellipsoid : vtkSmartPointer<vtkGlobeEllipsoid>::New().Get();
+  in.Grid->SetEllipsoid(in.Ellipsoid);
+  in.Composite->SetEllipsoid(in.Ellipsoid);
+  in.ReductionValid = false;
+  this->Modified();
+}
+
+vtkGlobeEllipsoid* vtkGlobeMapper::GetEllipsoid()
+{
+  return this->Internals->Ellipsoid;
+}
+
+void vtkGlobeMapper::AddLayer(vtkGlobeLayer* layer)
+{
+  this->Internals->Layers->AddLayer(layer);
+  this->Modified();
+}
+
+void vtkGlobeMapper::RemoveLayer(vtkGlobeLayer* layer)
+{
+  this->Internals->Layers->RemoveLayer(layer);
+  this->Modified();
+}
+
+void vtkGlobeMapper::RemoveAllLayers()
+{
+  this->Internals->Layers->RemoveAllLayers();
+  this->Modified();
+}
+
+int vtkGlobeMapper::GetNumberOfLayers()
+{
+  return this->Internals->Layers->GetNumberOfLayers();
+}
+
+vtkGlobeLayer* vtkGlobeMapper::GetLayer(int index)
+{
+  return this->Internals->Layers->GetLayer(index);
+}
+
+vtkGlobeLayerSet* vtkGlobeMapper::GetLayerSet()
+{
+  return this->Internals->Layers;
+}
+
+void vtkGlobeMapper::SetGridResolution(int resolution)
+{
+  // Above 2048 the index buffer alone would take more than 100 MB.
+  resolution = std::max(2, std::min(resolution, 2048));
+  if (resolution != this->Internals->GridPass->GetResolution())
+  {
+    this->Internals->GridPass->SetResolution(resolution);
+    this->Modified();
+  }
+}
+
+int vtkGlobeMapper::GetGridResolution()
+{
+  return this->Internals->GridPass->GetResolution();
+}
+
+void vtkGlobeMapper::SetAmbient(double ambient)
+{
+  this->Internals->Composite->SetAmbient(ambient);
+  this->Modified();
+}
+
+double vtkGlobeMapper::GetAmbient()
+{
+  return this->Internals->Composite->GetAmbient();
+}
+
+void vtkGlobeMapper::SetBaseColor(double r, double g, double b)
+{
+  this->Internals->Composite->SetBaseColor(r, g, b);
+  this->Modified();
+}
+
+vtkGlobeProjectiveGrid* vtkGlobeMapper::GetProjectiveGrid()
+{
+  return this->Internals->Grid;
+}
+
+vtkGlobeGridPass* vtkGlobeMapper::GetGridPass()
+{
+  return this->Internals->GridPass;
+}
+
+vtkGlobeCompositePass* vtkGlobeMapper::GetCompositePass()
+{
+  return this->Internals->Composite;
+}
+
+double vtkGlobeMapper::GetRasterTime()
+{
+  return vtkOpenGLRenderTimer::IsSupported()
+    ? this->Internals->RasterTimer.GetReusableElapsedSeconds()
+    : -1.0;
+}
+
+double vtkGlobeMapper::GetReductionTime()
+{
+  return vtkOpenGLRenderTimer::IsSupported()
+    ? this->Internals->ReductionTimer.GetReusableElapsedSeconds()
+    : -1.0;
+}
+
+vtkMTimeType vtkGlobeMapper::GetMTime()
+{
+  vtkMTimeType t = this->Superclass::GetMTime();
+  t = std::max(t, this->Internals->Ellipsoid->GetMTime());
+  return std::max(t, this->Internals->Layers->GetMTime());
+}
+
+double* vtkGlobeMapper::GetBounds()
+{
+  auto& in = *this->Internals;
+  in.Layers->Update();
+  const double* r = in.Ellipsoid->GetRadii();
+  const double top = std::max(0.0, in.Layers->GetMaximumHeight());
+  for (int i = 0; i < 3; ++i)
+  {
+    in.Bounds[2 * i] = -(r[i] + top);
+    in.Bounds[2 * i + 1] = r[i] + top;
+  }
+  return in.Bounds;
+}
+
+//------------------------------------------------------------------------------
+void vtkGlobeMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  auto& in = *this->Internals;
+  in.Layers->ReleaseGraphicsResources(window);
+  in.GridPass->ReleaseGraphicsResources(window);
+  in.Composite->ReleaseGraphicsResources(window);
+  for (auto* t : { in.GBuffer.Get(), in.GDepth.Get() })
+  {
+    if (t)
+    {
+      t->ReleaseGraphicsResources(window);
+    }
+  }
+  in.GBuffer = nullptr;
+  in.GDepth = nullptr;
+  if (in.GFramebuffer)
+  {
+    in.GFramebuffer->ReleaseGraphicsResources(window);
+    in.GFramebuffer = nullptr;
+  }
+  in.VAO->ReleaseGraphicsResources();
+  if (in.Indices)
+  {
+    in.Indices->ReleaseGraphicsResources();
+    in.Indices = nullptr;
+  }
+  in.IndexResolution = 0;
+  for (auto& t : in.ReductionLevels)
+  {
+    t->ReleaseGraphicsResources(window);
+  }
+  in.ReductionLevels.clear();
+  if (in.ReductionFramebuffer)
+  {
+    in.ReductionFramebuffer->ReleaseGraphicsResources(window);
+    in.ReductionFramebuffer = nullptr;
+  }
+  delete in.ReductionQuad;
+  in.ReductionQuad = nullptr;
+  in.RasterTimer.ReleaseGraphicsResources();
+  in.ReductionTimer.ReleaseGraphicsResources();
+  in.ReductionValid = false;
+  this->Superclass::ReleaseGraphicsResources(window);
+}
+
+//------------------------------------------------------------------------------
+void vtkGlobeMapper::UpdateLight(vtkRenderer* ren, vtkActor* act)
+{
+  auto& in = *this->Internals;
+  double toLight[3] = { 0, 0, 0 };
+  double color[3] = { 1, 1, 1 };
+  bool found = false;
+  vtkLightCollection* lights = ren->GetLights();
+  vtkCollectionSimpleIterator it;
+  lights->InitTraversal(it);
+  while (vtkLight* light = lights->GetNextLight(it))
+  {
+    if (!light->GetSwitch())
+    {
+      continue;
+    }
+    double p[3], f[3];
+    light->GetTransformedPosition(p);
+    light->GetTransformedFocalPoint(f);
+    for (int i = 0; i < 3; ++i)
+    {
+      toLight[i] = p[i] - f[i];
+      color[i] = light->GetDiffuseColor()[i] * light->GetIntensity();
+    }
+    found = vtkMath::Norm(toLight) > 0.0;
+    break;
+  }
+  if (!found)
+  {
+    // No light: light from the camera, as VTK's headlight does.
+    vtkCamera* camera = ren->GetActiveCamera();
+    const double* p = camera->GetPosition();
+    const double* f = camera->GetFocalPoint();
+    for (int i = 0; i < 3; ++i)
+    {
+      toLight[i] = p[i] - f[i];
+    }
+  }
+  // Into the body frame: the inverse of the actor's rotation.
+  vtkNew<vtkMatrix4x4> worldToBody;
+  vtkMatrix4x4::Invert(act->GetMatrix(), worldToBody);
+  double direction[4] = { toLight[0], toLight[1], toLight[2], 0.0 };
+  worldToBody->MultiplyPoint(direction, direction);
+  vtkMath::Normalize(direction);
+  in.Composite->SetLightDirection(direction);
+  in.Composite->SetLightColor(color);
+}
+
+//------------------------------------------------------------------------------
+void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
+{
+  auto& in = *this->Internals;
+  this->LastFrameDrewGlobe = false;
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!window)
+  {
+    return;
+  }
+  vtkOpenGLState* state = window->GetState();
+  int viewport[4];
+  state->vtkglGetIntegerv(GL_VIEWPORT, viewport);
+  const int width = viewport[2], height = viewport[3];
+  if (width <= 0 || height <= 0)
+  {
+    return;
+  }
+
+  in.Layers->Update();
+  in.Layers->UploadTextures(window);
+  const double minHeight = in.Layers->GetMinimumHeight();
+  const double maxHeight = in.Layers->GetMaximumHeight();
+
+  // The primary sphere: the lowest terrain seen in the last frame, unless the camera jumped
+  // (moved by more than a quarter of its height over that terrain), or there is none.
+  vtkCamera* camera = ren->GetActiveCamera();
+  double eye[4] = { 0, 0, 0, 1 };
+  camera->GetPosition(eye);
+  vtkNew<vtkMatrix4x4> worldToBody;
+  vtkMatrix4x4::Invert(act->GetMatrix(), worldToBody);
+  worldToBody->MultiplyPoint(eye, eye);
+  double primaryHeight = minHeight;
+  this->PrimaryFromReduction = false;
+  if (in.ReductionValid)
+  {
+    double llh[3];
+    in.Ellipsoid->CartesianToGeodeticQuiet(eye, llh);
+    const double above = std::abs(llh[2] - in.ReducedHeight);
+    const double moved = std::sqrt(vtkMath::Distance2BetweenPoints(eye, in.ReductionEye));
+    if (moved <= 0.25 * above + 1.0)
+    {
+      // A margin keeps terrain that comes into view next frame above the sphere.
+      primaryHeight = std::max(minHeight, in.ReducedHeight - (0.02 * above + 1.0));
+      this->PrimaryFromReduction = true;
+    }
+  }
+
+  if (!in.Grid->Update(camera, act->GetMatrix(), ren->GetTiledAspectRatio(), primaryHeight, maxHeight))
+  {
+    if (in.ReportedStatus != in.Grid->GetStatus())
+    {
+      vtkErrorMacro(<< "The globe is not drawn: " << in.Grid->GetStatus());
+      in.ReportedStatus = in.Grid->GetStatus();
+    }
+    in.ReductionValid = false;
+    return;
+  }
+  in.ReportedStatus.clear();
+  if (!in.Grid->GetVisible())
+  {
+    in.ReductionValid = false;
+    return;
+  }
+
+  vtkOpenGLState::ScopedglViewport viewportSaver(state);
+  vtkRenderState renderState(ren);
+  in.GridPass->Render(&renderState);
+  if (!this->RenderGBuffer(ren, act, width, height))
+  {
+    return;
+  }
+  state->vtkglViewport(viewport[0], viewport[1], width, height);
+  this->UpdateLight(ren, act);
+  in.Composite->SetGBuffer(in.GBuffer, in.GDepth);
+  in.Composite->Render(&renderState);
+  this->ReduceMinimumRadius(ren, width, height);
+  if (in.ReductionValid)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      in.ReductionEye[i] = eye[i];
+    }
+  }
+  this->LastFrameDrewGlobe = in.ReductionValid;
+}
+
+//------------------------------------------------------------------------------
+bool vtkGlobeMapper::RenderGBuffer(vtkRenderer* ren, vtkActor* act, int width, int height)
+{
+  auto& in = *this->Internals;
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  vtkOpenGLState* state = window->GetState();
+
+  if (!in.GFramebuffer)
+  {
+    in.GFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    in.GFramebuffer->SetContext(window);
+    in.GBuffer = vtkSmartPointer<vtkTextureObject>::New();
+    in.GBuffer->SetContext(window);
+    in.GBuffer->SetMinificationFilter(vtkTextureObject::Nearest);
+    in.GBuffer->SetMagnificationFilter(vtkTextureObject::Nearest);
+    in.GBuffer->SetWrapS(vtkTextureObject::ClampToEdge);
+    in.GBuffer->SetWrapT(vtkTextureObject::ClampToEdge);
+    in.GBuffer->Allocate2D(width, height, 4, VTK_FLOAT);
+    in.GDepth = vtkSmartPointer<vtkTextureObject>::New();
+    in.GDepth->SetContext(window);
+    in.GDepth->SetMinificationFilter(vtkTextureObject::Nearest);
+    in.GDepth->SetMagnificationFilter(vtkTextureObject::Nearest);
+    in.GDepth->AllocateDepth(width, height, vtkTextureObject::Float32);
+  }
+  in.GBuffer->Resize(width, height);
+  in.GDepth->Resize(width, height);
+
+  // The mesh's indices, rebuilt only when the grid resolution changes.
+  const int n = in.GridPass->GetResolution();
+  if (!in.Indices || in.IndexResolution != n)
+  {
+    std::vector<unsigned int> indices;
+    indices.reserve(static_cast<size_t>(n - 1) * (n - 1) * 6);
+    for (int j = 0; j + 1 < n; ++j)
+    {
+      for (int i = 0; i + 1 < n; ++i)
+      {
+        const unsigned int a = j * n + i, b = a + 1, c = a + n, d = c + 1;
+        indices.insert(indices.end(), { a, b, d, a, d, c });
+      }
+    }
+    in.Indices = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+    in.Indices->SetType(vtkOpenGLBufferObject::ElementArrayBuffer);
+    in.Indices->Upload(indices, vtkOpenGLBufferObject::ElementArrayBuffer);
+    in.IndexCount = indices.size();
+    in.IndexResolution = n;
+  }
+
+  vtkShaderProgram* program =
+    window->GetShaderCache()->ReadyShaderProgram(vtkGlobeRasterVS, vtkGlobeRasterFS, "");
+  if (!program || !program->GetCompiled())
+  {
+    vtkErrorMacro(<< "The globe's rasterization shader did not compile");
+    return false;
+  }
+
+  // Eye-relative body coordinates (m) -> clip: projection * view rotation * actor rotation,
+  // composed in double; translations cancel in eye-relative coordinates.
+  vtkCamera* camera = ren->GetActiveCamera();
+  vtkNew<vtkMatrix4x4> view;
+  view->DeepCopy(camera->GetViewTransformMatrix());
+  vtkNew<vtkMatrix4x4> model;
+  model->DeepCopy(act->GetMatrix());
+  for (int i = 0; i < 3; ++i)
+  {
+    view->SetElement(i, 3, 0.0);
+    model->SetElement(i, 3, 0.0);
+  }
+  vtkNew<vtkMatrix4x4> eyeToClip;
+  vtkMatrix4x4::Multiply4x4(view, model, eyeToClip);
+  vtkMatrix4x4::Multiply4x4(
+    camera->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1), eyeToClip, eyeToClip);
+  float columnMajor[16];
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      columnMajor[c * 4 + r] = static_cast<float>(eyeToClip->GetElement(r, c));
+    }
+  }
+
+  in.RasterTimer.ReusableStart();
+  vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
+  vtkOpenGLState::ScopedglClearColor clearColorSaver(state);
+  state->PushFramebufferBindings();
+  in.GFramebuffer->Bind();
+  in.GFramebuffer->AddColorAttachment(0, in.GBuffer);
+  in.GFramebuffer->AddDepthAttachment(in.GDepth);
+  in.GFramebuffer->ActivateDrawBuffers(1);
+  state->vtkglViewport(0, 0, width, height);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglDisable(GL_CULL_FACE);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_LESS);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+  state->vtkglClearDepth(1.0);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+  vtkGlobeGridPass* grid = in.GridPass;
+  grid->GetDirectionTexture()->Activate();
+  grid->GetPositionTexture()->Activate();
+  grid->GetHeightTexture()->Activate();
+  program->SetUniformi("globeDirection", grid->GetDirectionTexture()->GetTextureUnit());
+  program->SetUniformi("globePosition", grid->GetPositionTexture()->GetTextureUnit());
+  program->SetUniformi("globeHeight", grid->GetHeightTexture()->GetTextureUnit());
+  program->SetUniformi("globeGridN", n);
+  program->SetUniformMatrix4x4("globeEyeToClip", columnMajor);
+  const double* radii = in.Ellipsoid->GetRadii();
+  const double maxRadius = in.Ellipsoid->GetMaximumRadius();
+  const float r[3] = { static_cast<float>(radii[0]), static_cast<float>(radii[1]),
+    static_cast<float>(radii[2]) };
+  const float scaled[3] = { static_cast<float>(radii[0] / maxRadius),
+    static_cast<float>(radii[1] / maxRadius), static_cast<float>(radii[2] / maxRadius) };
+  program->SetUniform3f("globeRadii", r);
+  program->SetUniform3f("globeRadiiScaled", scaled);
+  program->SetUniformf("globeOneMinusRp", static_cast<float>(1.0 - in.Grid->GetPrimaryRadius()));
+
+  in.VAO->Bind();
+  in.Indices->Bind();
+  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(in.IndexCount), GL_UNSIGNED_INT, nullptr);
+  in.Indices->Release();
+  in.VAO->Release();
+
+  grid->GetHeightTexture()->Deactivate();
+  grid->GetPositionTexture()->Deactivate();
+  grid->GetDirectionTexture()->Deactivate();
+  in.GFramebuffer->RemoveColorAttachments(1);
+  in.GFramebuffer->RemoveDepthAttachment();
+  state->PopFramebufferBindings();
+  in.RasterTimer.ReusableStop();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkGlobeMapper::ReduceMinimumRadius(vtkRenderer* ren, int width, int height)
+{
+  auto& in = *this->Internals;
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  vtkOpenGLState* state = window->GetState();
+
+  // Levels of 1/4 the size each, down to one texel.
+  std::vector<std::pair<int, int>> sizes;
+  int w = width, h = height;
+  do
+  {
+    w = (w + 3) / 4;
+    h = (h + 3) / 4;
+    sizes.emplace_back(w, h);
+  } while (w > 1 || h > 1);
+  if (in.ReductionLevels.size() != sizes.size())
+  {
+    in.ReductionLevels.clear();
+  }
+  for (size_t i = 0; i < sizes.size(); ++i)
+  {
+    if (i >= in.ReductionLevels.size())
+    {
+      auto t = vtkSmartPointer<vtkTextureObject>::New();
+      t->SetContext(window);
+      t->SetMinificationFilter(vtkTextureObject::Nearest);
+      t->SetMagnificationFilter(vtkTextureObject::Nearest);
+      t->Allocate2D(sizes[i].first, sizes[i].second, 1, VTK_FLOAT);
+      in.ReductionLevels.push_back(t);
+    }
+    in.ReductionLevels[i]->Resize(sizes[i].first, sizes[i].second);
+  }
+  if (!in.ReductionFramebuffer)
+  {
+    in.ReductionFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    in.ReductionFramebuffer->SetContext(window);
+  }
+  if (!in.ReductionQuad)
+  {
+    in.ReductionQuad = new vtkOpenGLQuadHelper(window,
+      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), vtkGlobeReductionFS, "");
+  }
+  else
+  {
+    window->GetShaderCache()->ReadyShaderProgram(in.ReductionQuad->Program);
+  }
+  vtkShaderProgram* p = in.ReductionQuad->Program;
+  if (!p || !p->GetCompiled())
+  {
+    vtkErrorMacro(<< "The globe's reduction shader did not compile");
+    in.ReductionValid = false;
+    return;
+  }
+
+  in.ReductionTimer.ReusableStart();
+  vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglViewport viewportSaver(state);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->PushFramebufferBindings();
+  in.ReductionFramebuffer->Bind();
+  const double* radii = in.Ellipsoid->GetRadii();
+  const double maxRadius = in.Ellipsoid->GetMaximumRadius();
+  const float r[3] = { static_cast<float>(radii[0]), static_cast<float>(radii[1]),
+    static_cast<float>(radii[2]) };
+  const float scaled[3] = { static_cast<float>(radii[0] / maxRadius),
+    static_cast<float>(radii[1] / maxRadius), static_cast<float>(radii[2] / maxRadius) };
+  p->SetUniform3f("globeRadii", r);
+  p->SetUniform3f("globeRadiiScaled", scaled);
+  for (size_t i = 0; i < sizes.size(); ++i)
+  {
+    vtkTextureObject* source = i == 0 ? in.GBuffer.Get() : in.ReductionLevels[i - 1].Get();
+    in.ReductionFramebuffer->AddColorAttachment(0, in.ReductionLevels[i]);
+    in.ReductionFramebuffer->ActivateDrawBuffers(1);
+    state->vtkglViewport(0, 0, sizes[i].first, sizes[i].second);
+    source->Activate();
+    in.GDepth->Activate();
+    p->SetUniformi("globeSource", source->GetTextureUnit());
+    p->SetUniformi("globeDepth", in.GDepth->GetTextureUnit());
+    p->SetUniformi("globeFirstLevel", i == 0 ? 1 : 0);
+    const float outputSize[2] = { static_cast<float>(sizes[i].first),
+      static_cast<float>(sizes[i].second) };
+    p->SetUniform2f("globeOutputSize", outputSize);
+    in.ReductionQuad->Render();
+    in.GDepth->Deactivate();
+    source->Deactivate();
+  }
+  // One float back to the CPU; it sets the primary sphere of the next frame.
+  float value = 1e30f;
+  in.ReductionFramebuffer->Bind(GL_READ_FRAMEBUFFER);
+  in.ReductionFramebuffer->ActivateReadBuffer(0);
+  glReadPixels(0, 0, 1, 1, GL_RED, GL_FLOAT, &value);
+  in.ReductionFramebuffer->RemoveColorAttachments(1);
+  state->PopFramebufferBindings();
+  in.ReductionTimer.ReusableStop();
+
+  in.ReductionValid = std::isfinite(value) && value < 1e29f;
+  if (in.ReductionValid)
+  {
+    // rho - 1 in scaled units back to a height, as vtkGlobeProjectiveGrid maps heights.
+    in.ReducedHeight = value * in.Ellipsoid->GetMinimumRadius();
+    this->LastVisibleMinimumHeight = in.ReducedHeight;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkGlobeMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  auto& in = *this->Internals;
+  os << indent << "Ellipsoid: " << (in.Ellipsoid->GetName() ? in.Ellipsoid->GetName() : "custom")
+     << "\n";
+  os << indent << "GridResolution: " << this->GetGridResolution() << "\n";
+  os << indent << "Layers: " << in.Layers->GetNumberOfLayers() << "\n";
+  os << indent << "PrimaryFromReduction: " << this->PrimaryFromReduction << "\n";
+  os << indent << "LastVisibleMinimumHeight: " << this->LastVisibleMinimumHeight << "\n";
+}

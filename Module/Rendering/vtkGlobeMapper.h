@@ -1,0 +1,132 @@
+/**
+ * @class   vtkGlobeMapper
+ * @brief   A planetary globe rendered by Projective Grid Mapping, as a VTK mapper.
+ *
+ * Put a body into any VTK scene:
+ * @code
+ *   vtkNew<vtkGlobeMapper> mapper;
+ *   mapper->SetEllipsoid(wgs84);        // WGS84 unless set
+ *   mapper->AddLayer(heights);          // vtkGlobeLayer, bottom first
+ *   mapper->AddLayer(imagery);
+ *   vtkNew<vtkActor> actor;
+ *   actor->SetMapper(mapper);
+ *   renderer->AddActor(actor);
+ * @endcode
+ * The actor's matrix places the body-fixed frame in the world. Each frame (DESIGN.md §4):
+ *  1. CPU, in double: the eye in the body frame, the reference spheres and the sampling camera
+ *     (vtkGlobeProjectiveGrid); the primary sphere is the lowest terrain seen in the previous
+ *     frame (GPU min reduction), or the lowest data after a jump and on the first frame;
+ *  2. vtkGlobeGridPass: PGM and height composition on a GridResolution^2 grid;
+ *  3. rasterization of the grid as an eye-relative mesh into a G-buffer (direction, height,
+ *     depth);
+ *  4. vtkGlobeCompositePass: per-pixel composition of the colour layers and lighting, written
+ *     with the G-buffer's depth into the renderer's framebuffer, so other actors and the globe
+ *     occlude each other;
+ *  5. the minimum reduction of the visible planetary radius for the next frame.
+ * The grid resolution is independent of the window size: it is the accuracy/time dial.
+ *
+ * A camera at the centre of the body, at NaN, or with a parallel projection draws no globe
+ * (reported once); the rest of the scene renders.
+ */
+#ifndef vtkGlobeMapper_h
+#define vtkGlobeMapper_h
+
+#include "vtkGlobeRenderingModule.h" // for export macro
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkSmartPointer.h" // for vtkSmartPointer
+
+#include <memory> // for std::unique_ptr
+#include <string> // for std::string
+
+class vtkGlobeCompositePass;
+class vtkGlobeEllipsoid;
+class vtkGlobeGridPass;
+class vtkGlobeLayer;
+class vtkGlobeLayerSet;
+class vtkGlobeProjectiveGrid;
+
+class VTKGLOBERENDERING_EXPORT vtkGlobeMapper : public vtkOpenGLPolyDataMapper
+{
+public:
+  static vtkGlobeMapper* New();
+  vtkTypeMacro(vtkGlobeMapper, vtkOpenGLPolyDataMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The body (WGS84 unless set; nullptr restores WGS84).
+  void SetEllipsoid(vtkGlobeEllipsoid* ellipsoid);
+  vtkGlobeEllipsoid* GetEllipsoid();
+  ///@}
+
+  ///@{
+  /// Layers, composed bottom first (see vtkGlobeLayerSet).
+  void AddLayer(vtkGlobeLayer* layer);
+  void RemoveLayer(vtkGlobeLayer* layer);
+  void RemoveAllLayers();
+  int GetNumberOfLayers();
+  vtkGlobeLayer* GetLayer(int index);
+  vtkGlobeLayerSet* GetLayerSet();
+  ///@}
+
+  ///@{
+  /// Grid points per side of the projective grid (default 512).
+  void SetGridResolution(int resolution);
+  int GetGridResolution();
+  ///@}
+
+  ///@{
+  /// Shading: ambient fraction and the colour of ground that no colour layer covers.
+  void SetAmbient(double ambient);
+  double GetAmbient();
+  void SetBaseColor(double r, double g, double b);
+  ///@}
+
+  ///@{
+  /// The parts of a frame, for inspection, tests and benchmarks.
+  vtkGlobeProjectiveGrid* GetProjectiveGrid();
+  vtkGlobeGridPass* GetGridPass();
+  vtkGlobeCompositePass* GetCompositePass();
+  ///@}
+
+  /// True when the last frame's primary sphere came from the GPU min reduction (false: fallback).
+  vtkGetMacro(PrimaryFromReduction, bool);
+  /// The lowest visible terrain height of the last frame (m), from the reduction.
+  vtkGetMacro(LastVisibleMinimumHeight, double);
+  /// False when the last frame drew no globe pixels at all.
+  vtkGetMacro(LastFrameDrewGlobe, bool);
+
+  ///@{
+  /// GPU times (s) of the rasterization and the reduction, from the last finished frame.
+  double GetRasterTime();
+  double GetReductionTime();
+  ///@}
+
+  /// Bounds of the body (with the tallest terrain) in its body-fixed frame.
+  double* GetBounds() override;
+  void GetBounds(double bounds[6]) override { this->vtkMapper::GetBounds(bounds); }
+
+  void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkGlobeMapper();
+  ~vtkGlobeMapper() override;
+
+  bool RenderGBuffer(vtkRenderer* ren, vtkActor* act, int width, int height);
+  void ReduceMinimumRadius(vtkRenderer* ren, int width, int height);
+  void UpdateLight(vtkRenderer* ren, vtkActor* act);
+
+  bool PrimaryFromReduction = false;
+  double LastVisibleMinimumHeight = 0.0;
+  bool LastFrameDrewGlobe = false;
+
+private:
+  vtkGlobeMapper(const vtkGlobeMapper&) = delete;
+  void operator=(const vtkGlobeMapper&) = delete;
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

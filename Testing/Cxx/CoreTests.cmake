@@ -1,0 +1,37 @@
+# Tests of VTKGlobe::Core (no OpenGL).
+set(globe_core_tests
+  TestGlobeEllipsoidGeographicLib.cxx
+  TestGlobeEllipsoidBadInput.cxx
+  TestGlobeTriaxialEllipsoid.cxx
+  TestGlobeShaderMathEllipsoid.cxx
+  TestGlobeNewtonIterations.cxx
+  TestGlobeGeodeticTransform.cxx
+  TestGlobeLayerRead.cxx
+  TestGlobeLayerBadInput.cxx
+  TestGlobeLayerGeoTIFF.cxx
+  TestGlobeLayerVoidFill.cxx)
+
+create_test_sourcelist(_globe_core_driver_sources GlobeCoreCxxTests.cxx ${globe_core_tests})
+add_executable(GlobeCoreCxxTests ${_globe_core_driver_sources})
+# The layer tests read the data with OpenImageIO directly (the reference for pixel values)
+# and write small TIFF, PNG and GeoTIFF files with OpenImageIO, libtiff and libgeotiff.
+target_include_directories(GlobeCoreCxxTests PRIVATE
+  "${CMAKE_CURRENT_SOURCE_DIR}"
+  "${PROJECT_SOURCE_DIR}/Module/Core/ShaderMath"
+  "${GeographicLib_INCLUDE_DIRS}"
+  "${OIIO_INCLUDE_DIR}"
+  "${GEOTIFF_INCLUDE_DIR}")
+target_link_libraries(GlobeCoreCxxTests PRIVATE
+  VTKGlobe::Core VTK::CommonCore VTK::CommonDataModel VTK::CommonTransforms
+  VTK::FiltersGeneral VTK::FiltersSources VTK::TestingCore glm::glm ${GeographicLib_LIBRARIES}
+  "${OIIO_LIBRARY}" "${OIIO_UTIL_LIBRARY}" "${GEOTIFF_LIBRARY}" TIFF::TIFF)
+target_compile_definitions(GlobeCoreCxxTests PRIVATE
+  "VTKGLOBE_DATA_DIR=\"${VTKGLOBE_DATA_DIR}\""
+  "VTKGLOBE_TEMP_DIR=\"${CMAKE_CURRENT_BINARY_DIR}/Temporary\"")
+file(MAKE_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}/Temporary")
+
+foreach (test_file IN LISTS globe_core_tests)
+  get_filename_component(test_name "${test_file}" NAME_WE)
+  add_test(NAME "Core.${test_name}" COMMAND GlobeCoreCxxTests "${test_name}")
+  set_tests_properties("Core.${test_name}" PROPERTIES TIMEOUT 300)
+endforeach ()

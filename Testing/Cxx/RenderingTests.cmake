@@ -1,0 +1,35 @@
+# Tests of VTKGlobe::Rendering (OpenGL, run under Xvfb). Image tests compare with baselines in
+# Testing/Baseline (VTK's vtkRegressionTestImageThreshold); a missing or failing image is written
+# to the build's Testing/Temporary folder for inspection.
+set(globe_rendering_tests
+  TestGlobeGridPass.cxx)
+
+create_test_sourcelist(_globe_rendering_driver_sources GlobeRenderingCxxTests.cxx
+  ${globe_rendering_tests}
+  EXTRA_INCLUDE vtkTestDriver.h)
+add_executable(GlobeRenderingCxxTests ${_globe_rendering_driver_sources})
+target_include_directories(GlobeRenderingCxxTests PRIVATE
+  "${CMAKE_CURRENT_SOURCE_DIR}"
+  "${PROJECT_SOURCE_DIR}/Module/Core/ShaderMath"
+  "${GeographicLib_INCLUDE_DIRS}")
+target_link_libraries(GlobeRenderingCxxTests PRIVATE
+  VTKGlobe::Core VTKGlobe::Rendering VTK::CommonCore VTK::CommonDataModel VTK::RenderingCore
+  VTK::RenderingOpenGL2 VTK::TestingRendering VTK::FiltersSources VTK::IOImage
+  VTK::InteractionStyle glm::glm ${GeographicLib_LIBRARIES})
+target_compile_definitions(GlobeRenderingCxxTests PRIVATE
+  "VTKGLOBE_DATA_DIR=\\"${VTKGLOBE_DATA_DIR}\\"")
+vtk_module_autoinit(TARGETS GlobeRenderingCxxTests
+  MODULES VTK::RenderingOpenGL2 VTK::InteractionStyle)
+
+set(_globe_baselines "${PROJECT_SOURCE_DIR}/Testing/Baseline")
+set(_globe_temporary "${CMAKE_BINARY_DIR}/Testing/Temporary")
+file(MAKE_DIRECTORY "${_globe_temporary}")
+foreach (test_file IN LISTS globe_rendering_tests)
+  get_filename_component(test_name "${test_file}" NAME_WE)
+  add_test(NAME "Rendering.${test_name}"
+    COMMAND GlobeRenderingCxxTests "${test_name}"
+      -D "${VTKGLOBE_DATA_DIR}"
+      -T "${_globe_temporary}"
+      -V "${_globe_baselines}/${test_name}.png")
+  set_tests_properties("Rendering.${test_name}" PROPERTIES TIMEOUT 600)
+endforeach ()
