@@ -8,6 +8,7 @@
 #include "vtkGlobeLayer.h"
 #include "vtkGlobeLayerSet.h"
 #include "vtkGlobeProjectiveGrid.h"
+#include "vtkGlobeShaderSources.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
@@ -455,8 +456,10 @@ bool vtkGlobeMapper::RenderGBuffer(vtkRenderer* ren, vtkActor* act, int width, i
     in.IndexResolution = n;
   }
 
+  static const std::string vertexShader = vtkGlobeShaderSources::Replace(
+    vtkGlobeRasterVS, "//GLOBE::Math", vtkGlobeShaderSources::Math());
   vtkShaderProgram* program =
-    window->GetShaderCache()->ReadyShaderProgram(vtkGlobeRasterVS, vtkGlobeRasterFS, "");
+    window->GetShaderCache()->ReadyShaderProgram(vertexShader.c_str(), vtkGlobeRasterFS, "");
   if (!program || !program->GetCompiled())
   {
     vtkErrorMacro(<< "The globe's rasterization shader did not compile");
@@ -586,8 +589,10 @@ void vtkGlobeMapper::ReduceMinimumRadius(vtkRenderer* ren, int width, int height
   }
   if (!in.ReductionQuad)
   {
+    const std::string fs = vtkGlobeShaderSources::Replace(
+      vtkGlobeReductionFS, "//GLOBE::Math", vtkGlobeShaderSources::Math());
     in.ReductionQuad = new vtkOpenGLQuadHelper(window,
-      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), vtkGlobeReductionFS, "");
+      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), "");
   }
   else
   {

@@ -202,7 +202,7 @@ bool vtkGlobeProjectiveGrid::Update(const double eye[3], const double cornerRays
   const double rmax = std::max(this->MaximumRadius, rp);
   this->MaximumNormalAngle = std::acos(std::min(1.0, rp / d)) + std::acos(std::min(1.0, rp / rmax));
   const double rs = d * std::cos(this->MaximumNormalAngle);
-  if (rs > 0.0 && rs < rp && this->MaximumNormalAngle < vtkMath::Pi() / 2)
+  if (this->UseSecondarySphere && rs > 0.0 && rs < rp && this->MaximumNormalAngle < vtkMath::Pi() / 2)
   {
     this->SecondaryRadius = rs;
     this->SecondaryCMinusOne = (d - rs) / rs;
@@ -413,6 +413,7 @@ void vtkGlobeProjectiveGrid::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "BlendThreshold: " << this->BlendThreshold << "\n";
+  os << indent << "UseSecondarySphere: " << this->UseSecondarySphere << "\n";
   os << indent << "Status: " << this->Status << "\n";
   os << indent << "Visible: " << this->Visible << "\n";
   os << indent << "Distance (scaled): " << this->Distance << "\n";

@@ -47,6 +47,14 @@ public:
   vtkGetMacro(BlendThreshold, double);
   ///@}
 
+  ///@{
+  /// Use the secondary sphere for terrain rising from behind the horizon (default on; off
+  /// shows what it is for: peaks behind the horizon go missing).
+  vtkSetMacro(UseSecondarySphere, bool);
+  vtkGetMacro(UseSecondarySphere, bool);
+  vtkBooleanMacro(UseSecondarySphere, bool);
+  ///@}
+
   /**
    * Sets up the frame from a VTK camera. bodyToWorld is the actor's matrix (nullptr: identity),
    * aspect the viewport's aspect ratio, and the terrain heights (m) bound all visible terrain
@@ -121,6 +129,7 @@ protected:
 
   vtkSmartPointer<vtkGlobeEllipsoid> Ellipsoid;
   double BlendThreshold = 0.9;
+  bool UseSecondarySphere = true;
   const char* Status = "not updated";
   bool Visible = false;
 

@@ -2,7 +2,16 @@
 # Testing/Baseline (VTK's vtkRegressionTestImageThreshold); a missing or failing image is written
 # to the build's Testing/Temporary folder for inspection.
 set(globe_rendering_tests
-  TestGlobeGridPass.cxx)
+  TestGlobeEverestHorizon.cxx
+  TestGlobeFarAway.cxx
+  TestGlobeGridPass.cxx
+  TestGlobeLookingAway.cxx
+  TestGlobeMoon.cxx
+  TestGlobeNadir.cxx
+  TestGlobeRainier.cxx
+  TestGlobeRenderBadInput.cxx
+  TestGlobeSharedDepth.cxx
+  TestGlobeWholeEarth.cxx)
 
 create_test_sourcelist(_globe_rendering_driver_sources GlobeRenderingCxxTests.cxx
   ${globe_rendering_tests}
@@ -15,9 +24,9 @@ target_include_directories(GlobeRenderingCxxTests PRIVATE
 target_link_libraries(GlobeRenderingCxxTests PRIVATE
   VTKGlobe::Core VTKGlobe::Rendering VTK::CommonCore VTK::CommonDataModel VTK::RenderingCore
   VTK::RenderingOpenGL2 VTK::TestingRendering VTK::FiltersSources VTK::IOImage
-  VTK::InteractionStyle glm::glm ${GeographicLib_LIBRARIES})
+  VTK::InteractionStyle VTK::opengl glm::glm ${GeographicLib_LIBRARIES})
 target_compile_definitions(GlobeRenderingCxxTests PRIVATE
-  "VTKGLOBE_DATA_DIR=\\"${VTKGLOBE_DATA_DIR}\\"")
+  "VTKGLOBE_DATA_DIR=\"${VTKGLOBE_DATA_DIR}\"")
 vtk_module_autoinit(TARGETS GlobeRenderingCxxTests
   MODULES VTK::RenderingOpenGL2 VTK::InteractionStyle)
 

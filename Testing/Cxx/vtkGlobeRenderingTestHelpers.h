@@ -3,8 +3,15 @@
 #ifndef vtkGlobeRenderingTestHelpers_h
 #define vtkGlobeRenderingTestHelpers_h
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkDataArray.h"
 #include "vtkGlobeEllipsoid.h"
+#include "vtkGlobeLayer.h"
+#include "vtkGlobeMapper.h"
+#include "vtkGlobeProjectiveGrid.h"
+#include "vtkNew.h"
+#include "vtkSmartPointer.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPixelBufferObject.h"
 #include "vtkRenderWindow.h"
@@ -12,6 +19,9 @@
 #include "vtkTextureObject.h"
 
 #include <cmath>
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -91,6 +101,425 @@ inline void PixelRay(vtkRenderer* renderer, double x, double y, double ray[3])
   {
     ray[i] /= n;
   }
+}
+/// A layer from a file in the data folder.
+inline vtkSmartPointer<vtkGlobeLayer> FileLayer(const std::string& file, bool height)
+{
+  auto layer = vtkSmartPointer<vtkGlobeLayer>::New();
+  layer->SetFileName((std::string(VTKGLOBE_DATA_DIR) + "/" + file).c_str());
+  if (height)
+  {
+    layer->SetRoleToHeight();
+  }
+  else
+  {
+    layer->SetRoleToColor();
+  }
+  return layer;
+}
+
+/// A globe scene in a small offscreen window: the mapper, its actor, a renderer and a window.
+struct Scene
+{
+  vtkNew<vtkGlobeEllipsoid> Body;
+  vtkNew<vtkGlobeMapper> Mapper;
+  vtkNew<vtkActor> Actor;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkRenderWindow> Window;
+
+  Scene(int width = 300, int height = 225, int grid = 256)
+  {
+    this->Mapper->SetEllipsoid(this->Body);
+    this->Mapper->SetGridResolution(grid);
+    this->Actor->SetMapper(this->Mapper);
+    this->Renderer->AddActor(this->Actor);
+    this->Renderer->SetBackground(0.0, 0.0, 0.0);
+    this->Window->SetOffScreenRendering(1);
+    this->Window->SetMultiSamples(0);
+    this->Window->SetSize(width, height);
+    this->Window->AddRenderer(this->Renderer);
+  }
+
+  /// The Earth with the data the demo uses: 2-degree relief, the Rainier and Everest SRTM
+  /// insets, and the Blue Marble imagery.
+  void AddEarthLayers(bool heights = true, bool color = true)
+  {
+    if (heights)
+    {
+      this->Mapper->AddLayer(FileLayer("earth/relief_2deg.tif", true));
+      this->Mapper->AddLayer(FileLayer("earth/mt_rainier_90m.tif", true));
+      this->Mapper->AddLayer(FileLayer("earth/mt_everest_90m.tif", true));
+    }
+    if (color)
+    {
+      this->Mapper->AddLayer(FileLayer("earth/world.tif", false));
+    }
+  }
+
+  void Look(const double camera[3], const double target[3], double angle, double nearPlane = 0,
+    double farPlane = 0)
+  {
+    LookAt(this->Renderer, this->Body, camera, target, angle);
+    if (nearPlane > 0)
+    {
+      this->Renderer->GetActiveCamera()->SetClippingRange(nearPlane, farPlane);
+    }
+    else
+    {
+      this->Renderer->ResetCameraClippingRange();
+    }
+  }
+
+  /// Renders twice: the second frame uses the first one's GPU reduction for the primary sphere.
+  void Render()
+  {
+    this->Window->Render();
+    this->Window->Render();
+  }
+};
+
+/// A height layer's value at (lon, lat) in degrees as the GPU samples it at level 0: bilinear
+/// between texel centres, clamped at the edges, wrapped in longitude for global layers.
+/// Returns false outside the layer.
+inline bool SampleHeight(vtkGlobeLayer* layer, double lon, double lat, double& value)
+{
+  double e[4];
+  layer->GetGeographicExtent(e);
+  const int w = layer->GetWidth(), h = layer->GetHeight();
+  double u = std::fmod(lon - e[0] + 720.0, 360.0) / (e[1] - e[0]);
+  const double v = (e[3] - lat) / (e[3] - e[2]);
+  if (u < 0 || u > 1 || v < 0 || v > 1)
+  {
+    return false;
+  }
+  vtkDataArray* data = layer->GetData();
+  const bool wrap = layer->IsGlobal();
+  auto at = [&](int i, int j) {
+    i = wrap ? ((i % w) + w) % w : std::max(0, std::min(i, w - 1));
+    j = std::max(0, std::min(j, h - 1));
+    return data->GetComponent(static_cast<vtkIdType>(j) * w + i, 0);
+  };
+  const double x = u * w - 0.5, y = v * h - 0.5;
+  const int i = static_cast<int>(std::floor(x)), j = static_cast<int>(std::floor(y));
+  const double fx = x - i, fy = y - j;
+  value = (1 - fy) * ((1 - fx) * at(i, j) + fx * at(i + 1, j)) +
+    fy * ((1 - fx) * at(i, j + 1) + fx * at(i + 1, j + 1));
+  return true;
+}
+
+/// Along-ray error of a depth-reconstructed point at eye distance z: 4 steps of a 24-bit depth
+/// buffer under VTK's perspective projection (the window's rounding, and ~2 ulp of the float
+/// z_ndc ~ 1 computed on the GPU), plus float rounding of the projection (8 ulp of z).
+inline double DepthBound(vtkCamera* camera, double z)
+{
+  const double n = camera->GetClippingRange()[0], f = camera->GetClippingRange()[1];
+  const double step = 1.0 / 16777215.0;
+  return 4.0 * z * z * (f - n) / (f * n) * step + 8.0 * z / 16777216.0;
+}
+
+/// The texel size (m, north-south) of the finest height layer covering (lon, lat).
+inline double FinestTexel(const std::vector<vtkGlobeLayer*>& layers, double lon, double lat, double radius)
+{
+  double best = 1e30;
+  for (vtkGlobeLayer* layer : layers)
+  {
+    double value;
+    if (layer->GetRole() == vtkGlobeLayer::Height && layer->IsValid() &&
+      SampleHeight(layer, lon, lat, value))
+    {
+      double e[4];
+      layer->GetGeographicExtent(e);
+      best = std::min(best, (e[3] - e[2]) / layer->GetHeight() * radius * 3.14159265358979 / 180.0);
+    }
+  }
+  return best;
+}
+
+/// The composed terrain height at (lon, lat) as vtkGlobeLayerSet composes it on the GPU:
+/// layers in order, "replace" weighted by coverage and an 8-texel feathered border for layers
+/// that do not cover the globe. (A C++ mirror of the generated GLSL, for tests.)
+inline double ComposedHeight(const std::vector<vtkGlobeLayer*>& layers, double lon, double lat)
+{
+  double h = 0.0;
+  for (vtkGlobeLayer* layer : layers)
+  {
+    if (layer->GetRole() != vtkGlobeLayer::Height || !layer->IsValid())
+    {
+      continue;
+    }
+    double value;
+    if (!SampleHeight(layer, lon, lat, value) || std::isnan(value))
+    {
+      continue;
+    }
+    double e[4];
+    layer->GetGeographicExtent(e);
+    const double u = std::fmod(lon - e[0] + 720.0, 360.0) / (e[1] - e[0]);
+    const double v = (e[3] - lat) / (e[3] - e[2]);
+    double w = 1.0;
+    if (!layer->IsGlobal())
+    {
+      w *= std::min(1.0, std::min(u, 1.0 - u) * layer->GetWidth() / 8.0);
+    }
+    if (!(e[2] <= -90.0 && e[3] >= 90.0))
+    {
+      w *= std::min(1.0, std::min(v, 1.0 - v) * layer->GetHeight() / 8.0);
+    }
+    h += (value - h) * w;
+  }
+  return h;
+}
+
+/// The height layers of a mapper, in order.
+inline std::vector<vtkGlobeLayer*> HeightLayers(vtkGlobeMapper* mapper)
+{
+  std::vector<vtkGlobeLayer*> layers;
+  for (int i = 0; i < mapper->GetNumberOfLayers(); ++i)
+  {
+    layers.push_back(mapper->GetLayer(i));
+  }
+  return layers;
+}
+
+/// Result of comparing depth-reconstructed terrain with the composed height data.
+struct TerrainCheck
+{
+  int Pixels = 0;          // covered pixels checked
+  int Failures = 0;        // beyond their bound
+  int NaNs = 0;            // NaN depth or position
+  double WorstRatio = 0.0; // worst |dh| / bound
+  double MedianError = 0.0;
+  double WorstError = 0.0;
+  std::string Where;
+};
+
+/**
+ * The longest triangle edge (m) of the frame's PGM mesh covering each pixel: the grid of the
+ * last frame rebuilt on the CPU (vtkGlobeProjectiveGrid, double, with the composed heights),
+ * each triangle projected and its edge written over its screen bounding box. 0: uncovered.
+ */
+inline std::vector<double> MeshEdgeMap(Scene& scene)
+{
+  const int* size = scene.Window->GetSize();
+  std::vector<double> map(static_cast<size_t>(size[0]) * size[1], 0.0);
+  vtkGlobeProjectiveGrid* grid = scene.Mapper->GetProjectiveGrid();
+  const int n = scene.Mapper->GetGridResolution();
+  const std::vector<vtkGlobeLayer*> layers = HeightLayers(scene.Mapper);
+  const double* radii = scene.Body->GetRadii();
+  const double* eye = scene.Renderer->GetActiveCamera()->GetPosition();
+  const double rp = grid->GetPrimaryRadius();
+  std::vector<double> world(static_cast<size_t>(n) * n * 3), screen(static_cast<size_t>(n) * n * 2);
+  std::vector<char> valid(static_cast<size_t>(n) * n, 0);
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const size_t k = static_cast<size_t>(j) * n + i;
+      double sdir[3], p[3];
+      if (!grid->ComputeGridPoint(static_cast<double>(i) / (n - 1), static_cast<double>(j) / (n - 1), sdir, p))
+      {
+        continue;
+      }
+      double normal[3] = { sdir[0] / radii[0], sdir[1] / radii[1], sdir[2] / radii[2] };
+      const double nn = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+      double llh[3];
+      double surface[3] = { sdir[0] * radii[0], sdir[1] * radii[1], sdir[2] * radii[2] };
+      scene.Body->CartesianToGeodeticQuiet(surface, llh);
+      const double h = ComposedHeight(layers, llh[0], llh[1]);
+      double* w = &world[3 * k];
+      for (int c = 0; c < 3; ++c)
+      {
+        w[c] = eye[c] + (p[c] + (1.0 - rp) * sdir[c]) * radii[c] + h * normal[c] / nn;
+      }
+      scene.Renderer->SetWorldPoint(w[0], w[1], w[2], 1.0);
+      scene.Renderer->WorldToDisplay();
+      const double* d = scene.Renderer->GetDisplayPoint();
+      screen[2 * k] = d[0];
+      screen[2 * k + 1] = d[1];
+      valid[k] = 1;
+    }
+  }
+  auto edge = [&](size_t a, size_t b) {
+    double dd = 0;
+    for (int c = 0; c < 3; ++c)
+    {
+      dd += (world[3 * a + c] - world[3 * b + c]) * (world[3 * a + c] - world[3 * b + c]);
+    }
+    return std::sqrt(dd);
+  };
+  for (int j = 0; j + 1 < n; ++j)
+  {
+    for (int i = 0; i + 1 < n; ++i)
+    {
+      const size_t a = static_cast<size_t>(j) * n + i, b = a + 1, c = a + n, d = c + 1;
+      if (!valid[a] || !valid[b] || !valid[c] || !valid[d])
+      {
+        continue;
+      }
+      const double longest = std::max({ edge(a, b), edge(a, c), edge(b, d), edge(c, d), edge(a, d) });
+      double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+      for (size_t v : { a, b, c, d })
+      {
+        x0 = std::min(x0, screen[2 * v]);
+        x1 = std::max(x1, screen[2 * v]);
+        y0 = std::min(y0, screen[2 * v + 1]);
+        y1 = std::max(y1, screen[2 * v + 1]);
+      }
+      const int px0 = std::max(0, static_cast<int>(std::floor(x0 - 1))),
+                px1 = std::min(size[0] - 1, static_cast<int>(std::ceil(x1 + 1)));
+      const int py0 = std::max(0, static_cast<int>(std::floor(y0 - 1))),
+                py1 = std::min(size[1] - 1, static_cast<int>(std::ceil(y1 + 1)));
+      for (int y = py0; y <= py1; ++y)
+      {
+        for (int x = px0; x <= px1; ++x)
+        {
+          double& m = map[static_cast<size_t>(y) * size[0] + x];
+          m = std::max(m, longest);
+        }
+      }
+    }
+  }
+  return map;
+}
+
+/**
+ * For every stride-th covered pixel: the world point reconstructed from the depth buffer
+ * (double), its geodetic height, and the composed data height at the same (lon, lat). The
+ * bound is the depth quantization along the ray (times 1 + slope) plus what the PGM mesh can
+ * represent there: a planar triangle of longest edge L deviates from the curved body by at
+ * most L^2 / 6R, and from the data by its own deviation from linear over L (second
+ * differences around the point), or, where L is more than 4 texels, by the local relief over
+ * L; plus how the GPU samples (float coordinates, 8-bit filter weights, mipmap offset).
+ */
+inline TerrainCheck CheckTerrain(Scene& scene, int stride)
+{
+  TerrainCheck result;
+  vtkRenderer* renderer = scene.Renderer;
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const std::vector<float> depth = ReadDepth(scene.Window);
+  const std::vector<double> edges = MeshEdgeMap(scene);
+  const int* size = scene.Window->GetSize();
+  const std::vector<vtkGlobeLayer*> layers = HeightLayers(scene.Mapper);
+  const double* eye = camera->GetPosition();
+  double view[3];
+  camera->GetDirectionOfProjection(view);
+  const double radius = scene.Body->GetMinimumRadius();
+  std::vector<double> errors;
+  for (int y = stride / 2; y < size[1]; y += stride)
+  {
+    for (int x = stride / 2; x < size[0]; x += stride)
+    {
+      const size_t at = static_cast<size_t>(y) * size[0] + x;
+      const float d = depth[at];
+      if (!(d < 1.0f))
+      {
+        result.NaNs += std::isnan(d) ? 1 : 0;
+        continue;
+      }
+      double p[3];
+      UnprojectPixel(renderer, x + 0.5, y + 0.5, d, p);
+      double llh[3];
+      if (!scene.Body->CartesianToGeodeticQuiet(p, llh))
+      {
+        ++result.NaNs;
+        continue;
+      }
+      const double z = (p[0] - eye[0]) * view[0] + (p[1] - eye[1]) * view[1] + (p[2] - eye[2]) * view[2];
+      const double h = ComposedHeight(layers, llh[0], llh[1]);
+      const double spacing = edges[at] > 0 ? edges[at] : 1e30;
+      // The data's deviation from linear over the triangle's size (second differences along
+      // both axes and the bilinear twist), and its slope.
+      const double mPerDeg = radius * 3.14159265358979 / 180.0;
+      const double dLat = std::min(spacing, 1e7) / mPerDeg;
+      const double dLon = dLat / std::max(std::cos(llh[1] * 3.14159265358979 / 180.0), 1e-3);
+      double curvature = 0.0, slope = 0.0;
+      if (spacing < 1e29)
+      {
+        for (int k = 0; k < 2; ++k)
+        {
+          const double a = ComposedHeight(layers, llh[0] + (k ? 0 : dLon), llh[1] + (k ? dLat : 0));
+          const double b = ComposedHeight(layers, llh[0] - (k ? 0 : dLon), llh[1] - (k ? dLat : 0));
+          curvature = std::max(curvature, std::abs(h - 0.5 * (a + b)));
+          slope = std::max(slope, std::abs(a - b) / (2.0 * spacing));
+        }
+        const double pp = ComposedHeight(layers, llh[0] + dLon, llh[1] + dLat);
+        const double pm = ComposedHeight(layers, llh[0] + dLon, llh[1] - dLat);
+        const double mp = ComposedHeight(layers, llh[0] - dLon, llh[1] + dLat);
+        const double mm = ComposedHeight(layers, llh[0] - dLon, llh[1] - dLat);
+        curvature = std::max(curvature, 0.25 * std::abs(pp - pm - mp + mm));
+        // Where the grid is much coarser than the data, its vertices carry mip-filtered heights
+        // and a triangle can only be bounded by the local relief at its scale.
+        const double texelHere = FinestTexel(layers, llh[0], llh[1], radius);
+        if (spacing > 4.0 * texelHere)
+        {
+          double lo = h, hi = h;
+          for (int a = -1; a <= 1; ++a)
+          {
+            for (int b = -1; b <= 1; ++b)
+            {
+              const double v = ComposedHeight(layers, llh[0] + a * dLon, llh[1] + b * dLat);
+              lo = std::min(lo, v);
+              hi = std::max(hi, v);
+            }
+          }
+          curvature = std::max(curvature, 0.5 * (hi - lo));
+        }
+      }
+      // How the GPU samples the data: float geodetic coordinates (~1 m on a planet), 8-bit
+      // bilinear weights (slope * texel / 256), and, where the grid is coarser than the texels,
+      // a mipmap level whose box filter is off-centre by up to half the grid spacing.
+      const double texel = FinestTexel(layers, llh[0], llh[1], radius);
+      const double sampling = slope * (radius * 2.0 / 16777216.0 * 8.0 + std::min(texel, 1e7) / 256.0 +
+                                        (spacing > texel && spacing < 1e29 ? 0.5 * spacing : 0.0));
+      const double bound = DepthBound(camera, z) * (1.0 + slope) + 2.0 * curvature + sampling +
+        (spacing < 1e29 ? spacing * spacing / (6.0 * radius) : 0.0) + 1e-3;
+      const double error = std::abs(llh[2] - h);
+      errors.push_back(error);
+      ++result.Pixels;
+      const double ratio = error / bound;
+      if (ratio > 1.0)
+      {
+        ++result.Failures;
+        if (std::getenv("VTKGLOBE_TEST_VERBOSE"))
+        {
+          std::printf("    beyond: pixel (%d, %d) lon %.3f lat %.3f h %.1f data %.1f bound %.1f "
+                      "spacing %.0f curvature %.1f\n",
+            x, y, llh[0], llh[1], llh[2], h, bound, spacing, curvature);
+        }
+      }
+      if (ratio > result.WorstRatio)
+      {
+        result.WorstRatio = ratio;
+        char where[200];
+        std::snprintf(where, sizeof(where),
+          "pixel (%d, %d) lon %.4f lat %.4f: h %.1f m, data %.1f m, bound %.1f m", x, y, llh[0],
+          llh[1], llh[2], h, bound);
+        result.Where = where;
+      }
+      result.WorstError = std::max(result.WorstError, error);
+    }
+  }
+  if (!errors.empty())
+  {
+    std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
+    result.MedianError = errors[errors.size() / 2];
+  }
+  std::printf("  terrain check: %d pixels, median |dh| %.2f m, worst %.1f m, worst/bound %.3f, "
+              "%d beyond bound, %d NaN\n    worst at %s\n",
+    result.Pixels, result.MedianError, result.WorstError, result.WorstRatio, result.Failures,
+    result.NaNs, result.Where.c_str());
+  return result;
+}
+
+/// Counts pixels whose depth is not the background's.
+inline int CoveredPixels(const std::vector<float>& depth)
+{
+  int n = 0;
+  for (float d : depth)
+  {
+    n += d < 1.0f ? 1 : 0;
+  }
+  return n;
 }
 } // namespace vtkGlobeTest
 

@@ -30,12 +30,48 @@ vec3 globe_normalFromLonLat(float lon, float lat)
   return vec3(cosLat * cos(lon), cosLat * sin(lon), sin(lat));
 }
 
+// atan2(y, x) in (-pi, pi] to ~2e-8 rad with + - * / only (the double C++ mirror, which
+// defines GLOBE_EXACT_ATAN2, uses the library's atan2 so it stays exact). GPU atan() is an approximation
+// whose accuracy GLSL does not specify (on llvmpipe it put texture lookups metres off); this
+// is Abramowitz & Stegun 4.4.49 (|error| <= 2e-8 on [0, 1]) after reduction to that range.
+#ifdef GLOBE_EXACT_ATAN2
+float globe_atan2(float y, float x)
+{
+  return atan(y, x);
+}
+#else
+float globe_atan2(float y, float x)
+{
+  float ax = abs(x);
+  float ay = abs(y);
+  float big = max(ax, ay);
+  if (!(big > 0.0f))
+  {
+    return 0.0f;
+  }
+  float t = min(ax, ay) / big;
+  float t2 = t * t;
+  float a = ((((((( -0.0040540580f * t2 + 0.0218612288f) * t2 - 0.0559098861f) * t2 +
+    0.0964200441f) * t2 - 0.1390853351f) * t2 + 0.1994653599f) * t2 - 0.3332985605f) * t2 +
+    0.9999993329f) * t;
+  if (ay > ax)
+  {
+    a = 1.5707963267948966f - a;
+  }
+  if (x < 0.0f)
+  {
+    a = 3.1415926535897932f - a;
+  }
+  return y < 0.0f ? -a : a;
+}
+#endif
+
 // Longitude in (-pi, pi] and latitude in [-pi/2, pi/2] of a unit normal. atan2 for both:
 // asin loses precision near the poles.
 void globe_lonLatFromNormal(vec3 n, GLOBE_OUT(float) lon, GLOBE_OUT(float) lat)
 {
-  lon = atan(n.y, n.x);
-  lat = atan(n.z, sqrt(n.x * n.x + n.y * n.y));
+  lon = globe_atan2(n.y, n.x);
+  lat = globe_atan2(n.z, sqrt(n.x * n.x + n.y * n.y));
 }
 
 // Unit normal of the ellipsoid at a point on (or near) its surface: normalize(p / radii^2).

@@ -80,10 +80,12 @@ inline double mix(double a, double b, double t)
 }
 #define GLOBE_OUT(T) T&
 #define GLOBE_NEWTON_TOLERANCE 8.9e-16 /* 4 double ulp */
+#define GLOBE_EXACT_ATAN2
 #define float double
 #include "globe_ellipsoid.glsl"
 #include "globe_pgm.glsl"
 #undef float
+#undef GLOBE_EXACT_ATAN2
 #undef GLOBE_NEWTON_TOLERANCE
 #undef GLOBE_OUT
 } // namespace

@@ -24,8 +24,8 @@ void main()
   float depth = texture(globeDepth, texCoord).r;
   vec4 g = texture(globeGBuffer, texCoord);
   bool covered = depth < 1.0 && dot(g.xyz, g.xyz) > 0.25;
-  vec3 s = covered ? normalize(g.xyz) : vec3(0.0, 0.0, 1.0);
-  vec3 n = normalize(s / globeRadiiScaled);
+  vec3 s = covered ? globe_normalize(g.xyz) : vec3(0.0, 0.0, 1.0);
+  vec3 n = globe_normalize(s / globeRadiiScaled);
   float lon;
   float lat;
   globe_lonLatFromNormal(n, lon, lat);

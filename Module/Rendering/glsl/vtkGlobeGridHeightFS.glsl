@@ -15,7 +15,7 @@ uniform vec3 globeRadiiScaled;
 void main()
 {
   vec4 d = texelFetch(globeDirection, ivec2(texCoord * vec2(textureSize(globeDirection, 0))), 0);
-  vec3 n = normalize(d.xyz / globeRadiiScaled);
+  vec3 n = globe_normalize(d.xyz / globeRadiiScaled);
   float lon;
   float lat;
   globe_lonLatFromNormal(n, lon, lat);

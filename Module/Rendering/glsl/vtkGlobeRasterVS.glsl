@@ -2,6 +2,8 @@
 // Rasterization: the grid as a mesh. Each vertex fetches its grid point, is displaced from the
 // primary sphere to the terrain along the geodetic normal, and is projected eye-relative:
 // no large coordinate is ever formed on the GPU.
+//GLOBE::Math
+
 uniform sampler2D globeDirection;
 uniform sampler2D globePosition;
 uniform sampler2D globeHeight;
@@ -20,7 +22,7 @@ void main()
   vec4 d = texelFetch(globeDirection, ij, 0);
   vec3 p = texelFetch(globePosition, ij, 0).xyz;
   float h = texelFetch(globeHeight, ij, 0).r;
-  vec3 n = normalize(d.xyz / globeRadiiScaled);
+  vec3 n = globe_normalize(d.xyz / globeRadiiScaled);
   // Terrain = ellipsoid point on the direction + h along the normal; relative to the eye that
   // is the primary-sphere point p plus (1 - r_p) along the direction, in metres.
   vec3 eyeRelative = (p + globeOneMinusRp * d.xyz) * globeRadii + h * n;

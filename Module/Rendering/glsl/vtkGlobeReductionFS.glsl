@@ -5,6 +5,8 @@
 // contribute +1e30.
 in vec2 texCoord;
 
+//GLOBE::Math
+
 uniform sampler2D globeSource;
 uniform sampler2D globeDepth;
 uniform int globeFirstLevel;
@@ -30,9 +32,9 @@ void main()
           continue;
         }
         // rho = |s + h n / radii|; rho - 1 without cancellation (|s| = 1).
-        vec3 s = normalize(v.xyz);
-        vec3 q = v.w * normalize(s / globeRadiiScaled) / globeRadii;
-        float rho = length(s + q);
+        vec3 s = globe_normalize(v.xyz);
+        vec3 q = v.w * globe_normalize(s / globeRadiiScaled) / globeRadii;
+        float rho = globe_length(s + q);
         m = min(m, (2.0 * dot(s, q) + dot(q, q)) / (rho + 1.0));
       }
       else
