@@ -4,6 +4,7 @@
 #
 #   Utilities/globe.sh demo [args]    build, then render the Earth (PNGs, or a window)
 #   Utilities/globe.sh test [args]    build, then run the whole test suite (ctest args pass on)
+#   Utilities/globe.sh bench [args]   build, then run the benchmark (table + build/benchmark.json)
 #   Utilities/globe.sh build          install packages and build only
 #
 # Environment: VTKGLOBE_BUILD_DIR (default: build/ in the source tree).
@@ -81,12 +82,18 @@ case "$command" in
     cd "$build"
     with_display ctest --output-on-failure --timeout 900 "$@"
     ;;
+  bench)
+    install_packages
+    build_project
+    echo "== running the benchmark (a program, not a test)"
+    with_display "$build/bin/GlobeBenchmark" --json "$build/benchmark.json" "$@"
+    ;;
   build)
     install_packages
     build_project
     ;;
   *)
-    echo "usage: $0 demo|test|build [args]" >&2
+    echo "usage: $0 demo|test|bench|build [args]" >&2
     exit 2
     ;;
 esac
