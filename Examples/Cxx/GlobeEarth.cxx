@@ -14,6 +14,7 @@
 #include "vtkGlobeLayer.h"
 #include "vtkGlobeMapper.h"
 #include "vtkInteractorStyleTrackballCamera.h"
+#include "vtkLight.h"
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
 #include "vtkRenderWindow.h"
@@ -44,16 +45,36 @@ struct Viewpoint
   double Target[3];
   double ViewAngle;
   double Near, Far;
+  // The sun seen from the target: azimuth (deg from north, clockwise) and elevation (deg).
+  double SunAzimuth, SunElevation;
 };
 
 const Viewpoint Viewpoints[] = {
   { "earth", "the whole Earth (Mahsman's TC1)", { -40.0, 25.0, 2.2e7 }, { -40.0, 25.0, 0.0 }, 30.0,
-    0, 0 },
+    0, 0, 120.0, 60.0 },
   { "rainier", "Mount Rainier from 20 km (Mahsman's TC2)", { -121.86, 46.75, 16000.0 },
-    { -121.7603, 46.8523, 4392.0 }, 40.0, 100.0, 1.0e6 },
-  { "everest", "Everest rising from behind the horizon, 300 km away", { 84.0, 26.5, 2500.0 },
-    { 86.925, 27.9881, 8000.0 }, 20.0, 100.0, 2.0e6 },
+    { -121.7603, 46.8523, 4392.0 }, 40.0, 100.0, 1.0e6, 150.0, 35.0 },
+  { "everest", "Everest rising from behind the horizon, 200 km away, from 1,000 m",
+    { 85.2, 26.6, 1000.0 }, { 86.925, 27.9881, 6000.0 }, 12.0, 100.0, 1.0e6, 200.0, 30.0 },
 };
+
+/// A directional sun for the viewpoint, placed from its azimuth and elevation at the target.
+void PlaceSun(vtkLight* sun, vtkGlobeEllipsoid* body, const Viewpoint& v)
+{
+  double target[3], east[3], north[3], up[3];
+  body->GeodeticToCartesian(v.Target, target);
+  body->ComputeEastNorthUp(v.Target[0], v.Target[1], east, north, up);
+  const double deg = 3.14159265358979 / 180.0;
+  const double a = v.SunAzimuth * deg, e = v.SunElevation * deg;
+  double position[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    const double toSun = std::cos(e) * (std::sin(a) * east[i] + std::cos(a) * north[i]) + std::sin(e) * up[i];
+    position[i] = target[i] + 1.0e7 * toSun;
+  }
+  sun->SetPosition(position);
+  sun->SetFocalPoint(target);
+}
 
 void PlaceCamera(vtkRenderer* renderer, vtkGlobeEllipsoid* body, const Viewpoint& v)
 {
@@ -154,6 +175,11 @@ int main(int argc, char* argv[])
   actor->SetMapper(mapper);
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
+  vtkNew<vtkLight> sun;
+  sun->SetLightTypeToSceneLight();
+  sun->SetPositional(false);
+  sun->SetIntensity(1.1);
+  renderer->AddLight(sun);
   renderer->SetBackground(0.0, 0.0, 0.02);
   vtkNew<vtkRenderWindow> window;
   window->AddRenderer(renderer);
@@ -164,6 +190,7 @@ int main(int argc, char* argv[])
   if (interactive)
   {
     PlaceCamera(renderer, wgs84, Viewpoints[0]);
+    PlaceSun(sun, wgs84, Viewpoints[0]);
     vtkNew<vtkRenderWindowInteractor> interactor;
     vtkNew<vtkInteractorStyleTrackballCamera> style;
     interactor->SetInteractorStyle(style);
@@ -172,7 +199,8 @@ int main(int argc, char* argv[])
     {
       vtkRenderer* Renderer;
       vtkGlobeEllipsoid* Body;
-    } context{ renderer, wgs84 };
+      vtkLight* Sun;
+    } context{ renderer, wgs84, sun };
     vtkNew<vtkCallbackCommand> keys;
     keys->SetClientData(&context);
     keys->SetCallback([](vtkObject* caller, unsigned long, void* clientData, void*) {
@@ -182,6 +210,7 @@ int main(int argc, char* argv[])
       if (key >= '1' && key <= '3')
       {
         PlaceCamera(c->Renderer, c->Body, Viewpoints[key - '1']);
+        PlaceSun(c->Sun, c->Body, Viewpoints[key - '1']);
         iren->Render();
       }
     });
@@ -199,6 +228,7 @@ int main(int argc, char* argv[])
       continue;
     }
     PlaceCamera(renderer, wgs84, v);
+    PlaceSun(sun, wgs84, v);
     // Two frames: the second uses the first one's lowest visible terrain (GPU reduction).
     window->Render();
     window->Render();
