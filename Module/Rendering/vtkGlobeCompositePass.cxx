@@ -141,11 +141,8 @@ void vtkGlobeCompositePass::Render(const vtkRenderState* s)
   this->Depth->Activate();
   p->SetUniformi("globeGBuffer", this->GBuffer->GetTextureUnit());
   p->SetUniformi("globeDepth", this->Depth->GetTextureUnit());
+  vtkGlobeShaderSources::SetRadii(p, this->Ellipsoid);
   const double* radii = this->Ellipsoid->GetRadii();
-  const double maxRadius = this->Ellipsoid->GetMaximumRadius();
-  const float scaled[3] = { static_cast<float>(radii[0] / maxRadius),
-    static_cast<float>(radii[1] / maxRadius), static_cast<float>(radii[2] / maxRadius) };
-  p->SetUniform3f("globeRadiiScaled", scaled);
   p->SetUniformf("globeMeanRadius", static_cast<float>((radii[0] + radii[1] + radii[2]) / 3.0));
   auto f3 = [](const double v[3]) {
     return std::array<float, 3>{ static_cast<float>(v[0]), static_cast<float>(v[1]),

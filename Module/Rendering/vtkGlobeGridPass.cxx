@@ -226,10 +226,7 @@ void vtkGlobeGridPass::Render(const vtkRenderState* s)
   p = this->HeightQuad->Program;
   this->DirectionTexture->Activate();
   p->SetUniformi("globeDirection", this->DirectionTexture->GetTextureUnit());
-  const double* radii = grid->GetEllipsoid()->GetRadii();
-  const double maxRadius = grid->GetEllipsoid()->GetMaximumRadius();
-  const double scaled[3] = { radii[0] / maxRadius, radii[1] / maxRadius, radii[2] / maxRadius };
-  Uniform3(p, "globeRadiiScaled", scaled);
+  vtkGlobeShaderSources::SetRadii(p, grid->GetEllipsoid());
   this->Layers->BindTextures(p);
   this->HeightQuad->Render();
   this->Layers->UnbindTextures();

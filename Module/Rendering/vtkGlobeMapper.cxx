@@ -523,14 +523,7 @@ bool vtkGlobeMapper::RenderGBuffer(vtkRenderer* ren, vtkActor* act, int width, i
   program->SetUniformi("globeHeight", grid->GetHeightTexture()->GetTextureUnit());
   program->SetUniformi("globeGridN", n);
   program->SetUniformMatrix4x4("globeEyeToClip", columnMajor);
-  const double* radii = in.Ellipsoid->GetRadii();
-  const double maxRadius = in.Ellipsoid->GetMaximumRadius();
-  const float r[3] = { static_cast<float>(radii[0]), static_cast<float>(radii[1]),
-    static_cast<float>(radii[2]) };
-  const float scaled[3] = { static_cast<float>(radii[0] / maxRadius),
-    static_cast<float>(radii[1] / maxRadius), static_cast<float>(radii[2] / maxRadius) };
-  program->SetUniform3f("globeRadii", r);
-  program->SetUniform3f("globeRadiiScaled", scaled);
+  vtkGlobeShaderSources::SetRadii(program, in.Ellipsoid);
   program->SetUniformf("globeOneMinusRp", static_cast<float>(1.0 - in.Grid->GetPrimaryRadius()));
 
   in.VAO->Bind();
@@ -616,14 +609,7 @@ void vtkGlobeMapper::ReduceMinimumRadius(vtkRenderer* ren, int width, int height
   state->vtkglDisable(GL_SCISSOR_TEST);
   state->PushFramebufferBindings();
   in.ReductionFramebuffer->Bind();
-  const double* radii = in.Ellipsoid->GetRadii();
-  const double maxRadius = in.Ellipsoid->GetMaximumRadius();
-  const float r[3] = { static_cast<float>(radii[0]), static_cast<float>(radii[1]),
-    static_cast<float>(radii[2]) };
-  const float scaled[3] = { static_cast<float>(radii[0] / maxRadius),
-    static_cast<float>(radii[1] / maxRadius), static_cast<float>(radii[2] / maxRadius) };
-  p->SetUniform3f("globeRadii", r);
-  p->SetUniform3f("globeRadiiScaled", scaled);
+  vtkGlobeShaderSources::SetRadii(p, in.Ellipsoid);
   for (size_t i = 0; i < sizes.size(); ++i)
   {
     vtkTextureObject* source = i == 0 ? in.GBuffer.Get() : in.ReductionLevels[i - 1].Get();
