@@ -20,7 +20,7 @@ shift || true
 packages=(
   cmake g++ make pkg-config
   libvtk9-dev python3-vtk9
-  libglm-dev libgeographiclib-dev libopenimageio-dev libgeotiff-dev proj-data
+  libglm-dev libgeographiclib-dev libopenimageio-dev libgeotiff-dev libtiff-dev proj-data
   xvfb xauth x11-utils libgl1-mesa-dri libglx-mesa0 mesa-utils
 )
 

@@ -34,6 +34,7 @@
 #include "vtkGlobeReductionFS.h"
 
 #include <cmath>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,11 @@ public:
   bool ReductionValid = false;
   double ReducedHeight = 0.0; // lowest visible terrain of the last frame (m)
   double ReductionEye[3] = { 0, 0, 0 };
+  // The reduced value travels back through a pixel-pack buffer and is read at the start of the
+  // next frame, which needs it first: no frame waits for its own GPU work.
+  GLuint ReadbackBuffer = 0;
+  bool ReadbackPending = false;
+  double PendingEye[3] = { 0, 0, 0 };
 
   vtkOpenGLRenderTimer RasterTimer;
   vtkOpenGLRenderTimer ReductionTimer;
@@ -103,6 +109,7 @@ void vtkGlobeMapper::SetEllipsoid(vtkGlobeEllipsoid* ellipsoid)
   in.Grid->SetEllipsoid(in.Ellipsoid);
   in.Composite->SetEllipsoid(in.Ellipsoid);
   in.ReductionValid = false;
+  in.ReadbackPending = false;
   this->Modified();
 }
 
@@ -269,6 +276,12 @@ void vtkGlobeMapper::ReleaseGraphicsResources(vtkWindow* window)
   in.ReductionQuad = nullptr;
   in.RasterTimer.ReleaseGraphicsResources();
   in.ReductionTimer.ReleaseGraphicsResources();
+  if (in.ReadbackBuffer)
+  {
+    glDeleteBuffers(1, &in.ReadbackBuffer);
+    in.ReadbackBuffer = 0;
+  }
+  in.ReadbackPending = false;
   in.ReductionValid = false;
   this->Superclass::ReleaseGraphicsResources(window);
 }
@@ -340,6 +353,7 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     return;
   }
 
+  this->CollectReduction();
   in.Layers->Update();
   in.Layers->UploadTextures(window);
   const double minHeight = in.Layers->GetMinimumHeight();
@@ -397,15 +411,38 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   this->UpdateLight(ren, act);
   in.Composite->SetGBuffer(in.GBuffer, in.GDepth);
   in.Composite->Render(&renderState);
-  this->ReduceMinimumRadius(ren, width, height);
+  this->LastFrameDrewGlobe = true;
+  this->ReduceMinimumRadius(ren, width, height, eye);
+}
+
+//------------------------------------------------------------------------------
+void vtkGlobeMapper::CollectReduction()
+{
+  auto& in = *this->Internals;
+  if (!in.ReadbackPending)
+  {
+    return;
+  }
+  in.ReadbackPending = false;
+  float value = 1e30f;
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, in.ReadbackBuffer);
+  if (const void* mapped = glMapBufferRange(GL_PIXEL_PACK_BUFFER, 0, sizeof(float), GL_MAP_READ_BIT))
+  {
+    std::memcpy(&value, mapped, sizeof(float));
+    glUnmapBuffer(GL_PIXEL_PACK_BUFFER);
+  }
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  in.ReductionValid = std::isfinite(value) && value < 1e29f;
   if (in.ReductionValid)
   {
+    // rho - 1 in scaled units back to a height, as vtkGlobeProjectiveGrid maps heights.
+    in.ReducedHeight = value * in.Ellipsoid->GetMinimumRadius();
+    this->LastVisibleMinimumHeight = in.ReducedHeight;
     for (int i = 0; i < 3; ++i)
     {
-      in.ReductionEye[i] = eye[i];
+      in.ReductionEye[i] = in.PendingEye[i];
     }
   }
-  this->LastFrameDrewGlobe = in.ReductionValid;
 }
 
 //------------------------------------------------------------------------------
@@ -543,7 +580,8 @@ bool vtkGlobeMapper::RenderGBuffer(vtkRenderer* ren, vtkActor* act, int width, i
 }
 
 //------------------------------------------------------------------------------
-void vtkGlobeMapper::ReduceMinimumRadius(vtkRenderer* ren, int width, int height)
+void vtkGlobeMapper::ReduceMinimumRadius(
+  vtkRenderer* ren, int width, int height, const double eye[3])
 {
   auto& in = *this->Internals;
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
@@ -628,21 +666,27 @@ void vtkGlobeMapper::ReduceMinimumRadius(vtkRenderer* ren, int width, int height
     in.GDepth->Deactivate();
     source->Deactivate();
   }
-  // One float back to the CPU; it sets the primary sphere of the next frame.
-  float value = 1e30f;
+  // One float back to the CPU, asynchronously: it sets the primary sphere of the next frame,
+  // which collects it (CollectReduction).
+  if (!in.ReadbackBuffer)
+  {
+    glGenBuffers(1, &in.ReadbackBuffer);
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, in.ReadbackBuffer);
+    glBufferData(GL_PIXEL_PACK_BUFFER, sizeof(float), nullptr, GL_STREAM_READ);
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  }
   in.ReductionFramebuffer->Bind(GL_READ_FRAMEBUFFER);
   in.ReductionFramebuffer->ActivateReadBuffer(0);
-  glReadPixels(0, 0, 1, 1, GL_RED, GL_FLOAT, &value);
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, in.ReadbackBuffer);
+  glReadPixels(0, 0, 1, 1, GL_RED, GL_FLOAT, nullptr);
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
   in.ReductionFramebuffer->RemoveColorAttachments(1);
   state->PopFramebufferBindings();
   in.ReductionTimer.ReusableStop();
-
-  in.ReductionValid = std::isfinite(value) && value < 1e29f;
-  if (in.ReductionValid)
+  in.ReadbackPending = true;
+  for (int i = 0; i < 3; ++i)
   {
-    // rho - 1 in scaled units back to a height, as vtkGlobeProjectiveGrid maps heights.
-    in.ReducedHeight = value * in.Ellipsoid->GetMinimumRadius();
-    this->LastVisibleMinimumHeight = in.ReducedHeight;
+    in.PendingEye[i] = eye[i];
   }
 }
 

@@ -22,7 +22,8 @@
  *  4. vtkGlobeCompositePass: per-pixel composition of the colour layers and lighting, written
  *     with the G-buffer's depth into the renderer's framebuffer, so other actors and the globe
  *     occlude each other;
- *  5. the minimum reduction of the visible planetary radius for the next frame.
+ *  5. the minimum reduction of the visible planetary radius, read back asynchronously and
+ *     used by the next frame.
  * The grid resolution is independent of the window size: it is the accuracy/time dial.
  *
  * A camera at the centre of the body, at NaN, or with a parallel projection draws no globe
@@ -92,7 +93,7 @@ public:
   vtkGetMacro(PrimaryFromReduction, bool);
   /// The lowest visible terrain height of the last frame (m), from the reduction.
   vtkGetMacro(LastVisibleMinimumHeight, double);
-  /// False when the last frame drew no globe pixels at all.
+  /// False when the last frame drew no globe (not in view, or no usable camera).
   vtkGetMacro(LastFrameDrewGlobe, bool);
 
   ///@{
@@ -114,7 +115,8 @@ protected:
   ~vtkGlobeMapper() override;
 
   bool RenderGBuffer(vtkRenderer* ren, vtkActor* act, int width, int height);
-  void ReduceMinimumRadius(vtkRenderer* ren, int width, int height);
+  void ReduceMinimumRadius(vtkRenderer* ren, int width, int height, const double eye[3]);
+  void CollectReduction();
   void UpdateLight(vtkRenderer* ren, vtkActor* act);
 
   bool PrimaryFromReduction = false;
