@@ -110,10 +110,13 @@ double vtkGlobeGridPass::GetHeightTime()
 //------------------------------------------------------------------------------
 bool vtkGlobeGridPass::Prepare(vtkOpenGLRenderWindow* window)
 {
+  // A new resolution only resizes the textures: the programs do not depend on it.
   const int n = this->Resolution;
   if (this->DirectionTexture && this->DirectionTexture->GetWidth() != static_cast<unsigned int>(n))
   {
-    this->ReleaseGraphicsResources(window);
+    this->DirectionTexture->Resize(n, n);
+    this->PositionTexture->Resize(n, n);
+    this->HeightTexture->Resize(n, n);
   }
   if (!this->DirectionTexture)
   {
@@ -132,8 +135,9 @@ bool vtkGlobeGridPass::Prepare(vtkOpenGLRenderWindow* window)
     this->PGMQuad = new vtkOpenGLQuadHelper(window, vs.c_str(), fs.c_str(), "");
     ++this->NumberOfShaderBuilds;
   }
-  // The height program is generated from the active layers: rebuild only when they change.
-  const std::string key = this->Layers->GetShaderKey();
+  // The height program is generated from the active height layers: rebuild only when they
+  // change.
+  const std::string key = this->Layers->GetShaderKey(false);
   if (this->HeightQuad && key != this->HeightShaderKey)
   {
     delete this->HeightQuad;
@@ -143,7 +147,7 @@ bool vtkGlobeGridPass::Prepare(vtkOpenGLRenderWindow* window)
   {
     std::string fs = vtkGlobeShaderSources::Replace(
       vtkGlobeGridHeightFS, "//GLOBE::Math", vtkGlobeShaderSources::Math());
-    fs = vtkGlobeShaderSources::Replace(fs, "//GLOBE::Layers", this->Layers->GetShaderCode());
+    fs = vtkGlobeShaderSources::Replace(fs, "//GLOBE::Layers", this->Layers->GetShaderCode(false));
     this->HeightQuad = new vtkOpenGLQuadHelper(window, vs.c_str(), fs.c_str(), "");
     this->HeightShaderKey = key;
     ++this->NumberOfShaderBuilds;
@@ -227,9 +231,9 @@ void vtkGlobeGridPass::Render(const vtkRenderState* s)
   this->DirectionTexture->Activate();
   p->SetUniformi("globeDirection", this->DirectionTexture->GetTextureUnit());
   vtkGlobeShaderSources::SetRadii(p, grid->GetEllipsoid());
-  this->Layers->BindTextures(p);
+  this->Layers->BindTextures(p, false);
   this->HeightQuad->Render();
-  this->Layers->UnbindTextures();
+  this->Layers->UnbindTextures(false);
   this->DirectionTexture->Deactivate();
   this->Framebuffer->RemoveColorAttachments(1);
   this->HeightTimer->ReusableStop();

@@ -247,14 +247,18 @@ size_t vtkGlobeLayerSet::GetTextureMemory()
 }
 
 //------------------------------------------------------------------------------
-std::string vtkGlobeLayerSet::GetShaderKey()
+std::string vtkGlobeLayerSet::GetShaderKey(bool withColor)
 {
   std::ostringstream key;
-  key << "h" << this->Internals->Heights.size() << "c" << this->Internals->Colors.size();
+  key << "h" << this->Internals->Heights.size();
+  if (withColor)
+  {
+    key << "c" << this->Internals->Colors.size();
+  }
   return key.str();
 }
 
-std::string vtkGlobeLayerSet::GetShaderCode()
+std::string vtkGlobeLayerSet::GetShaderCode(bool withColor)
 {
   const auto& in = *this->Internals;
   std::ostringstream s;
@@ -266,7 +270,7 @@ std::string vtkGlobeLayerSet::GetShaderCode()
       << "uniform vec4 globeHeightExtent" << i << ";\n"
       << "uniform vec2 globeHeightFeather" << i << ";\n";
   }
-  for (size_t i = 0; i < in.Colors.size(); ++i)
+  for (size_t i = 0; withColor && i < in.Colors.size(); ++i)
   {
     s << "uniform sampler2D globeColor" << i << ";\n"
       << "uniform vec4 globeColorExtent" << i << ";\n"
@@ -331,6 +335,10 @@ std::string vtkGlobeLayerSet::GetShaderCode()
   s << "  gradient = g;\n"
        "  return h;\n"
        "}\n";
+  if (!withColor)
+  {
+    return s.str();
+  }
   // Colours: RGBA; coverage times alpha is the weight.
   s << "vec4 globe_composeColor(float lon, float lat, vec2 dLonLatdx, vec2 dLonLatdy)\n"
        "{\n"
@@ -359,7 +367,7 @@ std::string vtkGlobeLayerSet::GetShaderCode()
 }
 
 //------------------------------------------------------------------------------
-void vtkGlobeLayerSet::BindTextures(vtkShaderProgram* program)
+void vtkGlobeLayerSet::BindTextures(vtkShaderProgram* program, bool withColor)
 {
   const auto& in = *this->Internals;
   auto bind = [program](Entry* e, const std::string& prefix, size_t i) {
@@ -376,21 +384,21 @@ void vtkGlobeLayerSet::BindTextures(vtkShaderProgram* program)
   {
     bind(in.Heights[i], "globeHeight", i);
   }
-  for (size_t i = 0; i < in.Colors.size(); ++i)
+  for (size_t i = 0; withColor && i < in.Colors.size(); ++i)
   {
     bind(in.Colors[i], "globeColor", i);
   }
 }
 
-void vtkGlobeLayerSet::UnbindTextures()
+void vtkGlobeLayerSet::UnbindTextures(bool withColor)
 {
   for (Entry* e : this->Internals->Heights)
   {
     e->Texture->Deactivate();
   }
-  for (Entry* e : this->Internals->Colors)
+  for (size_t i = 0; withColor && i < this->Internals->Colors.size(); ++i)
   {
-    e->Texture->Deactivate();
+    this->Internals->Colors[i]->Texture->Deactivate();
   }
 }
 

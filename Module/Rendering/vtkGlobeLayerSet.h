@@ -61,15 +61,16 @@ public:
   /// Uploads changed layers to textures (needs a current context).
   void UploadTextures(vtkOpenGLRenderWindow* window);
 
-  /// GLSL declarations and functions for the active layers.
-  std::string GetShaderCode();
+  /// GLSL declarations and functions for the active layers: the height layers only
+  /// (globe_composeHeight), or with the colour layers too (and globe_composeColor).
+  std::string GetShaderCode(bool withColor = true);
 
-  /// A key that changes exactly when GetShaderCode() would.
-  std::string GetShaderKey();
+  /// A key that changes exactly when GetShaderCode(withColor) would.
+  std::string GetShaderKey(bool withColor = true);
 
   /// Binds the textures and sets the uniforms of the generated code on a ready program.
-  void BindTextures(vtkShaderProgram* program);
-  void UnbindTextures();
+  void BindTextures(vtkShaderProgram* program, bool withColor = true);
+  void UnbindTextures(bool withColor = true);
 
   /// Texture uploads so far (a layer is uploaded when it, or its data, changed).
   vtkGetMacro(NumberOfUploads, int);

@@ -9,6 +9,7 @@ set(globe_rendering_tests
   TestGlobeMoon.cxx
   TestGlobeNadir.cxx
   TestGlobeRainier.cxx
+  TestGlobeRedundantWork.cxx
   TestGlobeRenderBadInput.cxx
   TestGlobeSharedDepth.cxx
   TestGlobeWholeEarth.cxx)
