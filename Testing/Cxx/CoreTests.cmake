@@ -15,18 +15,11 @@ create_test_sourcelist(_globe_core_driver_sources GlobeCoreCxxTests.cxx ${globe_
 add_executable(GlobeCoreCxxTests ${_globe_core_driver_sources})
 # The layer tests read the data with OpenImageIO directly (the reference for pixel values)
 # and write small TIFF, PNG and GeoTIFF files with OpenImageIO, libtiff and libgeotiff.
-target_include_directories(GlobeCoreCxxTests PRIVATE
-  "${CMAKE_CURRENT_SOURCE_DIR}"
-  "${PROJECT_SOURCE_DIR}/Module/Core/ShaderMath"
-  "${GeographicLib_INCLUDE_DIRS}"
-  "${OIIO_INCLUDE_DIR}"
-  "${GEOTIFF_INCLUDE_DIR}")
+target_include_directories(GlobeCoreCxxTests PRIVATE "${OIIO_INCLUDE_DIR}" "${GEOTIFF_INCLUDE_DIR}")
 target_link_libraries(GlobeCoreCxxTests PRIVATE
-  VTKGlobe::Core VTK::CommonCore VTK::CommonDataModel VTK::CommonTransforms
-  VTK::FiltersGeneral VTK::FiltersSources VTK::TestingCore glm::glm ${GeographicLib_LIBRARIES}
+  GlobeTestSupport VTK::CommonTransforms VTK::FiltersGeneral VTK::FiltersSources VTK::TestingCore
   "${OIIO_LIBRARY}" "${OIIO_UTIL_LIBRARY}" "${GEOTIFF_LIBRARY}" TIFF::TIFF)
 target_compile_definitions(GlobeCoreCxxTests PRIVATE
-  "VTKGLOBE_DATA_DIR=\"${VTKGLOBE_DATA_DIR}\""
   "VTKGLOBE_TEMP_DIR=\"${CMAKE_CURRENT_BINARY_DIR}/Temporary\"")
 file(MAKE_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}/Temporary")
 

@@ -18,16 +18,9 @@ create_test_sourcelist(_globe_rendering_driver_sources GlobeRenderingCxxTests.cx
   ${globe_rendering_tests}
   EXTRA_INCLUDE vtkTestDriver.h)
 add_executable(GlobeRenderingCxxTests ${_globe_rendering_driver_sources})
-target_include_directories(GlobeRenderingCxxTests PRIVATE
-  "${CMAKE_CURRENT_SOURCE_DIR}"
-  "${PROJECT_SOURCE_DIR}/Module/Core/ShaderMath"
-  "${GeographicLib_INCLUDE_DIRS}")
 target_link_libraries(GlobeRenderingCxxTests PRIVATE
-  VTKGlobe::Core VTKGlobe::Rendering VTK::CommonCore VTK::CommonDataModel VTK::RenderingCore
-  VTK::RenderingOpenGL2 VTK::TestingRendering VTK::FiltersSources VTK::IOImage
-  VTK::InteractionStyle VTK::opengl glm::glm ${GeographicLib_LIBRARIES})
-target_compile_definitions(GlobeRenderingCxxTests PRIVATE
-  "VTKGLOBE_DATA_DIR=\"${VTKGLOBE_DATA_DIR}\"")
+  GlobeTestSupport VTKGlobe::Rendering VTK::RenderingCore VTK::RenderingOpenGL2
+  VTK::TestingRendering VTK::FiltersSources VTK::IOImage VTK::InteractionStyle VTK::opengl)
 vtk_module_autoinit(TARGETS GlobeRenderingCxxTests
   MODULES VTK::RenderingOpenGL2 VTK::InteractionStyle)
 
