@@ -664,7 +664,34 @@ vtkGlobeLayer::~vtkGlobeLayer()
 //------------------------------------------------------------------------------------------
 const char* vtkGlobeLayer::GetRoleAsString()
 {
-  return this->Role == Color ? "Color" : "Height";
+  switch (this->Role)
+  {
+    case Color:
+      return "Color";
+    case NormalMap:
+      return "NormalMap";
+    case Overlay:
+      return "Overlay";
+    case Mask:
+      return "Mask";
+    case NightLights:
+      return "NightLights";
+    default:
+      return "Height";
+  }
+}
+
+const char* vtkGlobeLayer::GetBlendModeAsString()
+{
+  switch (this->BlendMode)
+  {
+    case Add:
+      return "Add";
+    case Average:
+      return "Average";
+    default:
+      return "Replace";
+  }
 }
 
 //------------------------------------------------------------------------------------------
@@ -810,7 +837,7 @@ bool vtkGlobeLayer::Update()
     const auto time = std::filesystem::last_write_time(now.FileName, ec);
     now.FileTime = ec ? 0 : static_cast<long long>(time.time_since_epoch().count());
   }
-  now.Role = this->Role;
+  now.Role = this->IsImageRole() ? Color : Height; // images load alike whatever their role
   now.ValueScale = this->ValueScale;
   now.ValueOffset = this->ValueOffset;
   now.NoDataOverridden = this->NoDataValueOverridden;
@@ -993,9 +1020,9 @@ bool vtkGlobeLayer::LoadFile()
     return fail("a Height layer needs a 1-channel raster, and it has " + std::to_string(channels) +
       " channels");
   }
-  if (this->Role == Color && channels != 3 && channels != 4)
+  if (this->Role != Height && channels != 3 && channels != 4)
   {
-    return fail("a Color layer needs a 3-channel (RGB) or 4-channel (RGBA) raster, and it has " +
+    return fail(std::string("a ") + this->GetRoleAsString() + " layer needs a 3-channel (RGB) or 4-channel (RGBA) raster, and it has " +
       std::to_string(channels) + " channel" + (channels == 1 ? "" : "s"));
   }
 
@@ -1180,7 +1207,7 @@ bool vtkGlobeLayer::LoadMemory()
 {
   vtkInternals& in = *this->Internals;
   const char* what = in.MemoryRole == Height ? "in-memory height data" : "in-memory color data";
-  if (in.MemoryRole != this->Role)
+  if ((in.MemoryRole == Height) != (this->Role == Height))
   {
     vtkErrorMacro(<< "Cannot load " << what << " as a " << this->GetRoleAsString()
                   << " layer: the role does not match the data");
@@ -1335,6 +1362,17 @@ void vtkGlobeLayer::PrintSelf(ostream& os, vtkIndent indent)
   }
   os << (this->NoDataValueOverridden ? " (set by the user)" : " (from the file)") << "\n";
   os << indent << "FillVoids: " << (this->FillVoids ? "On" : "Off") << "\n";
+  os << indent << "Enabled: " << (this->Enabled ? "On" : "Off") << "\n";
+  os << indent << "DrawOrder: " << this->DrawOrder << "\n";
+  os << indent << "Opacity: " << this->Opacity << "\n";
+  os << indent << "Gamma: " << this->Gamma << "\n";
+  os << indent << "ValidRange: " << this->ValidRange[0] << " .. " << this->ValidRange[1] << "\n";
+  os << indent << "BlendMode: " << this->GetBlendModeAsString() << "\n";
+  os << indent << "FeatherWidth: " << this->FeatherWidth << "\n";
+  os << indent << "ProjectionQualityWeight: " << (this->ProjectionQualityWeight ? "On" : "Off")
+     << " (limit " << this->ProjectionQualityLimit << ")\n";
+  os << indent << "Interpolation: " << (this->Interpolation == Nearest ? "Nearest" : "Linear")
+     << "\n";
   os << indent << "Valid: " << (this->Valid ? "yes" : "no") << "\n";
   os << indent << "NumberOfLoads: " << this->NumberOfLoads << "\n";
   if (!this->Valid)

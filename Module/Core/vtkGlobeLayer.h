@@ -55,10 +55,41 @@ public:
   vtkTypeMacro(vtkGlobeLayer, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /**
+   * What the raster is. Height: metres, composed per grid point. The others are images
+   * (loaded as RGBA), composed per screen pixel: Color (albedo), NormalMap (tangent-space
+   * normals in the east-north-up frame, RGB = 0.5 * n + 0.5), Overlay (RGBA drawn on top of
+   * the lit ground, unlit), Mask (the red channel, 1 = water: specular reflection), and
+   * NightLights (RGB light emitted on the night side).
+   */
   enum Roles
   {
     Height = 0,
-    Color = 1
+    Color = 1,
+    NormalMap = 2,
+    Overlay = 3,
+    Mask = 4,
+    NightLights = 5
+  };
+
+  /**
+   * How a layer meets what the layers below it composed. Replace: mix towards this layer by
+   * its weight. Add: add weight * value (e.g. topography over a geoid or areoid). Average:
+   * a run of consecutive Average layers is averaged by their weights, and the average
+   * replaces what is below by the summed weight (capped at 1).
+   */
+  enum BlendModes
+  {
+    Replace = 0,
+    Add = 1,
+    Average = 2
+  };
+
+  /// Texture filtering: Linear (mipmapped, the default) or Nearest (shows the texels).
+  enum Interpolations
+  {
+    Nearest = 0,
+    Linear = 1
   };
 
   enum ModelTypes
@@ -68,12 +99,66 @@ public:
   };
 
   ///@{
-  /// What the raster is: Height (default) or Color.
-  vtkSetClampMacro(Role, int, Height, Color);
+  /// What the raster is (see Roles): Height by default.
+  vtkSetClampMacro(Role, int, Height, NightLights);
   vtkGetMacro(Role, int);
   void SetRoleToHeight() { this->SetRole(Height); }
   void SetRoleToColor() { this->SetRole(Color); }
+  void SetRoleToNormalMap() { this->SetRole(NormalMap); }
+  void SetRoleToOverlay() { this->SetRole(Overlay); }
+  void SetRoleToMask() { this->SetRole(Mask); }
+  void SetRoleToNightLights() { this->SetRole(NightLights); }
   const char* GetRoleAsString();
+  /// True for every role but Height: the raster is an image, loaded as RGBA.
+  bool IsImageRole() { return this->Role != Height; }
+  ///@}
+
+  ///@{
+  /**
+   * Composition settings. None of them reloads or re-uploads the data, and only BlendMode,
+   * Enabled, DrawOrder and ProjectionQualityWeight change the generated shaders; the others
+   * are uniforms.
+   * - Enabled: a disabled layer is not composed at all (its texture is kept).
+   * - DrawOrder: layers compose in increasing DrawOrder, ties in the order they were added.
+   * - Opacity in [0, 1] multiplies the layer's weight.
+   * - Gamma (> 0): image values become v^Gamma (OpenSpace's convention; 1 = unchanged).
+   * - ValidRange: height values outside [min, max] are voids here (zero weight), so the
+   *   layer below shows (default: everything is valid).
+   * - FeatherWidth: the weight ramps from 0 to 1 over this many texels inside the layer's
+   *   border (8 by default; 0 = a hard edge). Borders a global layer wraps across have none.
+   * - ProjectionQualityWeight: multiply the weight by Kooima's projection-quality weight
+   *   clamp(1 - |log k / log n|, 0, 1), k the anisotropy of the pixel's footprint in texels
+   *   and n = ProjectionQualityLimit, so an inset in a projection that stretches texels here
+   *   (e.g. equirectangular near a pole) gives way to a layer that does not.
+   */
+  vtkSetMacro(Enabled, bool);
+  vtkGetMacro(Enabled, bool);
+  vtkBooleanMacro(Enabled, bool);
+  vtkSetMacro(DrawOrder, int);
+  vtkGetMacro(DrawOrder, int);
+  vtkSetClampMacro(Opacity, double, 0.0, 1.0);
+  vtkGetMacro(Opacity, double);
+  vtkSetClampMacro(Gamma, double, 1e-3, 1e3);
+  vtkGetMacro(Gamma, double);
+  vtkSetVector2Macro(ValidRange, double);
+  vtkGetVector2Macro(ValidRange, double);
+  vtkSetClampMacro(BlendMode, int, Replace, Average);
+  vtkGetMacro(BlendMode, int);
+  void SetBlendModeToReplace() { this->SetBlendMode(Replace); }
+  void SetBlendModeToAdd() { this->SetBlendMode(Add); }
+  void SetBlendModeToAverage() { this->SetBlendMode(Average); }
+  const char* GetBlendModeAsString();
+  vtkSetClampMacro(FeatherWidth, double, 0.0, 1e6);
+  vtkGetMacro(FeatherWidth, double);
+  vtkSetMacro(ProjectionQualityWeight, bool);
+  vtkGetMacro(ProjectionQualityWeight, bool);
+  vtkBooleanMacro(ProjectionQualityWeight, bool);
+  vtkSetClampMacro(ProjectionQualityLimit, double, 1.0001, 1e6);
+  vtkGetMacro(ProjectionQualityLimit, double);
+  vtkSetClampMacro(Interpolation, int, Nearest, Linear);
+  vtkGetMacro(Interpolation, int);
+  void SetInterpolationToNearest() { this->SetInterpolation(Nearest); }
+  void SetInterpolationToLinear() { this->SetInterpolation(Linear); }
   ///@}
 
   ///@{
@@ -231,6 +316,18 @@ protected:
   bool HasNoDataValue = false;
   bool NoDataValueOverridden = false;
   bool FillVoids = true;
+
+  // Composition settings (used by the renderer, never by the load).
+  bool Enabled = true;
+  int DrawOrder = 0;
+  double Opacity = 1.0;
+  double Gamma = 1.0;
+  double ValidRange[2] = { -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  int BlendMode = Replace;
+  double FeatherWidth = 8.0;
+  bool ProjectionQualityWeight = false;
+  double ProjectionQualityLimit = 8.0;
+  int Interpolation = Linear;
 
   // Results of the last load.
   bool Valid = false;

@@ -1,7 +1,9 @@
 #include "vtkGlobeCompositePass.h"
 
 #include "vtkGlobeEllipsoid.h"
+#include "vtkGlobeLayer.h"
 #include "vtkGlobeLayerSet.h"
+#include "vtkMath.h"
 #include "vtkGlobeShaderSources.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLQuadHelper.h"
@@ -16,7 +18,9 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
+#include "vtkGlobeAtmosphere.h"
 #include "vtkGlobeCompositeFS.h"
+#include "vtkGlobeLines.h"
 
 #include <array>
 
@@ -99,7 +103,7 @@ void vtkGlobeCompositePass::Render(const vtkRenderState* s)
   {
     return;
   }
-  const std::string key = this->Layers->GetShaderKey();
+  const std::string key = this->GetShaderKey();
   if (this->Quad && key != this->ShaderKey)
   {
     delete this->Quad;
@@ -107,12 +111,10 @@ void vtkGlobeCompositePass::Render(const vtkRenderState* s)
   }
   if (!this->Quad)
   {
-    std::string fs = vtkGlobeShaderSources::Replace(
-      vtkGlobeCompositeFS, "//GLOBE::Math", vtkGlobeShaderSources::Math());
-    fs = vtkGlobeShaderSources::Replace(fs, "//GLOBE::Layers", this->Layers->GetShaderCode());
-    this->FragmentSource = fs;
-    this->Quad = new vtkOpenGLQuadHelper(
-      window, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), "");
+    this->FragmentSource = this->BuildFragmentShader();
+    this->Quad = new vtkOpenGLQuadHelper(window,
+      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
+      this->FragmentSource.c_str(), "");
     this->ShaderKey = key;
     ++this->NumberOfShaderBuilds;
   }
@@ -132,10 +134,20 @@ void vtkGlobeCompositePass::Render(const vtkRenderState* s)
   vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
   vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
   state->vtkglEnable(GL_DEPTH_TEST);
   state->vtkglDepthFunc(GL_LEQUAL);
   state->vtkglDepthMask(GL_TRUE);
-  state->vtkglDisable(GL_BLEND);
+  if (this->Atmosphere)
+  {
+    // Terrain is opaque (alpha 1); the sky is added to what is behind it (alpha 0).
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  }
+  else
+  {
+    state->vtkglDisable(GL_BLEND);
+  }
 
   this->GBuffer->Activate();
   this->Depth->Activate();
@@ -152,6 +164,30 @@ void vtkGlobeCompositePass::Render(const vtkRenderState* s)
   p->SetUniform3f("globeLightColor", f3(this->LightColor).data());
   p->SetUniform3f("globeBaseColor", f3(this->BaseColor).data());
   p->SetUniformf("globeAmbient", static_cast<float>(this->Ambient));
+  p->SetUniformf("globeMaximumRadius", static_cast<float>(this->Ellipsoid->GetMaximumRadius()));
+  const double r = this->Ellipsoid->GetMaximumRadius();
+  const double eye[3] = { this->Eye[0] / r, this->Eye[1] / r, this->Eye[2] / r };
+  p->SetUniform3f("globeEye", f3(eye).data());
+  float clipToEye[16];
+  for (int row = 0; row < 4; ++row)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      clipToEye[c * 4 + row] = static_cast<float>(this->ClipToEye[row * 4 + c]);
+    }
+  }
+  p->SetUniformMatrix4x4("globeClipToEye", clipToEye);
+  p->SetUniform2f("globeSpecular",
+    std::array<float, 2>{ static_cast<float>(this->SpecularStrength),
+      static_cast<float>(this->SpecularPower) }
+      .data());
+  p->SetUniformf("globeAtmosphereIntensity", static_cast<float>(this->AtmosphereIntensity));
+  p->SetUniform3f("globeLines",
+    std::array<float, 3>{ static_cast<float>(this->GraticuleSpacing * vtkMath::Pi() / 180.0),
+      static_cast<float>(this->ContourInterval), static_cast<float>(this->LineWidth) }
+      .data());
+  p->SetUniform3f("globeGraticuleColor", f3(this->GraticuleColor).data());
+  p->SetUniform3f("globeContourColor", f3(this->ContourColor).data());
   this->Layers->BindTextures(p);
 
   this->Quad->Render();
@@ -164,11 +200,156 @@ void vtkGlobeCompositePass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
+void vtkGlobeCompositePass::SetView(const double eye[3], const double clipToEye[16])
+{
+  // Not Modified(): the view changes every frame and rebuilds nothing.
+  std::copy(eye, eye + 3, this->Eye);
+  std::copy(clipToEye, clipToEye + 16, this->ClipToEye);
+}
+
+std::string vtkGlobeCompositePass::GetShaderKey()
+{
+  if (!this->Layers)
+  {
+    return std::string();
+  }
+  std::string key = this->Layers->GetShaderKey(true) + "|";
+  const bool lit = this->Lighting;
+  key += lit ? "L" : "";
+  key += lit && this->NightLights && this->Layers->GetNumberOfActiveLayers(vtkGlobeLayer::NightLights) ? "N" : "";
+  key += lit && this->SpecularWater && this->Layers->GetNumberOfActiveLayers(vtkGlobeLayer::Mask) ? "S" : "";
+  key += this->Atmosphere ? "A" : "";
+  key += this->Graticule ? "G" : "";
+  key += this->Contours ? "C" : "";
+  return key;
+}
+
+std::string vtkGlobeCompositePass::BuildFragmentShader()
+{
+  const std::string key = this->GetShaderKey();
+  const std::string effects = key.substr(key.find('|') + 1);
+  auto has = [&effects](char c) { return effects.find(c) != std::string::npos; };
+  vtkGlobeLayerSet* layers = this->Layers;
+  const bool normalMaps = layers->GetNumberOfActiveLayers(vtkGlobeLayer::NormalMap) > 0;
+  const bool overlays = layers->GetNumberOfActiveLayers(vtkGlobeLayer::Overlay) > 0;
+  const bool colors = layers->GetNumberOfActiveLayers(vtkGlobeLayer::Color) > 0;
+
+  std::string functions;
+  std::string sample;
+  std::string sky;
+  std::string normal;
+  std::string shade;
+  if (colors)
+  {
+    sample += "  albedo = globe_composeColor(lon, lat, albedo);\n";
+  }
+  if (normalMaps)
+  {
+    sample += "  vec4 mapNormal = globe_composeNormal(lon, lat);\n";
+    normal += "  tangentNormal = mix(globe_normalize(tangentNormal), mapNormal.xyz, mapNormal.w);\n";
+  }
+  if (has('L'))
+  {
+    functions += "uniform vec2 globeSpecular;\n";
+    shade += "  float sunUp = dot(normal, globeLightDirection);\n"
+             "  color = albedo * (globeAmbient + (1.0 - globeAmbient) * max(sunUp, 0.0) * "
+             "globeLightColor);\n";
+  }
+  if (has('N'))
+  {
+    sample += "  vec3 nightLights = globe_composeNightLights(lon, lat);\n";
+    // Lights fade in across the terminator, judged on the ellipsoid's normal, not the slope.
+    shade += "  color += nightLights * (1.0 - smoothstep(-0.1, 0.1, dot(n, globeLightDirection)));\n";
+  }
+  if (has('S'))
+  {
+    sample += "  float water = globe_composeMask(lon, lat);\n";
+    shade += "  vec3 halfway = globe_normalize(globeLightDirection - ray);\n"
+             "  color += water * step(0.0, sunUp) * globeSpecular.x * globeLightColor *\n"
+             "    pow(max(dot(normal, halfway), 0.0), globeSpecular.y);\n";
+  }
+  if (has('G') || has('C'))
+  {
+    functions += vtkGlobeLines;
+    functions += "\nuniform vec3 globeLines; // graticule spacing (rad), contour interval (m), "
+                 "width (px)\nuniform vec3 globeGraticuleColor;\nuniform vec3 globeContourColor;\n";
+  }
+  if (has('G'))
+  {
+    sample += "  float graticule = max(\n"
+              "    globe_lineCoverage(lon, globeLines.x, globe_longitudePerPixel(lon), globeLines.z),\n"
+              "    globe_lineCoverage(lat, globeLines.x, abs(dFdx(lat)) + abs(dFdy(lat)), "
+              "globeLines.z));\n"
+              "  lineColor = globeGraticuleColor;\n"
+              "  lines = graticule;\n";
+  }
+  if (has('C'))
+  {
+    sample += "  float contour = globe_lineCoverage(h, globeLines.y, fwidth(h), globeLines.z);\n"
+              "  if (contour > lines) lineColor = globeContourColor;\n"
+              "  lines = max(lines, contour);\n";
+  }
+  if (overlays)
+  {
+    sample += "  vec4 overlay = globe_composeOverlay(lon, lat);\n";
+    shade += "  color = color * (1.0 - overlay.a) + overlay.rgb;\n";
+  }
+  if (has('A'))
+  {
+    functions += vtkGlobeAtmosphere;
+    functions += "\nuniform float globeAtmosphereIntensity;\n";
+    // Sky: where the ray crosses the shell and no terrain is drawn; added to the background.
+    sky += "  float t0, t1, g0, g1;\n"
+           "  if (globe_atmSphere(globeEye, ray, globe_atmOuter, t0, t1))\n"
+           "  {\n"
+           "    if (globe_atmSphere(globeEye, ray, globe_atmInner, g0, g1) && g0 > 0.0) t1 = g0;\n"
+           "    vec3 rayleigh, mie, transmittance;\n"
+           "    globe_atmosphere(globeEye, ray, max(t0, 0.0), t1, globeLightDirection, rayleigh,\n"
+           "      mie, transmittance);\n"
+           "    vec3 sky = globe_atmPhased(rayleigh, mie, ray, globeLightDirection,\n"
+           "      globeAtmosphereIntensity);\n"
+           "    gl_FragData[0] = vec4(1.0 - exp(-sky), 0.0);\n"
+           "    gl_FragDepth = 1.0;\n"
+           "    return;\n"
+           "  }\n";
+    // Ground: haze in front of the terrain, seen from space or from inside the shell.
+    shade += "  {\n"
+             "    vec3 ground = s * globeRadiiScaled + (g.w / globeMaximumRadius) * n;\n"
+             "    float tGround = length(ground - globeEye);\n"
+             "    float t0, t1;\n"
+             "    if (globe_atmSphere(globeEye, ray, globe_atmOuter, t0, t1) && tGround > max(t0, 0.0))\n"
+             "    {\n"
+             "      vec3 rayleigh, mie, transmittance;\n"
+             "      globe_atmosphere(globeEye, ray, max(t0, 0.0), tGround, globeLightDirection,\n"
+             "        rayleigh, mie, transmittance);\n"
+             "      vec3 haze = globe_atmPhased(rayleigh, mie, ray, globeLightDirection,\n"
+             "        globeAtmosphereIntensity);\n"
+             "      color = color * transmittance + (1.0 - exp(-haze));\n"
+             "    }\n"
+             "  }\n";
+  }
+  using vtkGlobeShaderSources::Replace;
+  std::string fs = Replace(vtkGlobeCompositeFS, "//GLOBE::Math", vtkGlobeShaderSources::Math());
+  fs = Replace(fs, "//GLOBE::Layers", layers->GetShaderCode(true));
+  fs = Replace(fs, "//GLOBE::EffectFunctions", functions);
+  fs = Replace(fs, "//GLOBE::Sample", sample);
+  fs = Replace(fs, "//GLOBE::Sky", sky);
+  fs = Replace(fs, "//GLOBE::Normal", normal);
+  fs = Replace(fs, "//GLOBE::Shade", shade);
+  return fs;
+}
+
+//------------------------------------------------------------------------------
 void vtkGlobeCompositePass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "LightDirection: " << this->LightDirection[0] << ", " << this->LightDirection[1]
      << ", " << this->LightDirection[2] << "\n";
   os << indent << "Ambient: " << this->Ambient << "\n";
+  os << indent << "Effects: " << (this->Lighting ? "Lighting " : "")
+     << (this->NightLights ? "NightLights " : "") << (this->SpecularWater ? "SpecularWater " : "")
+     << (this->Atmosphere ? "Atmosphere " : "") << (this->Graticule ? "Graticule " : "")
+     << (this->Contours ? "Contours" : "") << "\n";
+  os << indent << "ShaderKey: " << this->ShaderKey << "\n";
   os << indent << "NumberOfShaderBuilds: " << this->NumberOfShaderBuilds << "\n";
 }

@@ -3,12 +3,20 @@
  * @brief   The screen-space work: G-buffer -> colour and depth in the renderer's framebuffer.
  *
  * One full-screen pass (deferred texturing): for each pixel covered by terrain, the G-buffer's
- * direction gives the geodetic position; the colour layers of a vtkGlobeLayerSet are composed
- * there at the window's resolution, the terrain normal comes from the composed height
- * gradient, and the light of the scene shades it. The G-buffer's depth is written with the
- * depth test on, in VTK's depth convention, so the globe and every other actor occlude each
- * other correctly. The program is generated from the active layers and rebuilt only when they
- * change (GetNumberOfShaderBuilds()).
+ * direction gives the geodetic position; the layers of a vtkGlobeLayerSet are composed there
+ * at the window's resolution, the terrain normal comes from the composed height gradient (and
+ * normal-map layers), and the enabled effects shade it. The G-buffer's depth is written with
+ * the depth test on, in VTK's depth convention, so the globe and every other actor occlude
+ * each other correctly.
+ *
+ * Effects, each present in the shader only when enabled (and when the layers it needs exist):
+ * Lighting (diffuse, the first light of the scene), NightLights (NightLights layers on the
+ * dark side), SpecularWater (Blinn-Phong where Mask layers say water), Atmosphere (single
+ * scattering, seen from space and from the ground: the sky around the limb and the haze over
+ * the terrain), Graticule (latitude/longitude lines) and Contours (height lines), both of
+ * constant pixel width. The program is generated from the description of the active layers
+ * and effects (GetShaderKey()) and rebuilt only when that description changes
+ * (GetNumberOfShaderBuilds()); colours, spacings, intensities are uniforms.
  */
 #ifndef vtkGlobeCompositePass_h
 #define vtkGlobeCompositePass_h
@@ -55,6 +63,60 @@ public:
   vtkGetVector3Macro(BaseColor, double);
   ///@}
 
+  ///@{
+  /// Effects (see above). Lighting, NightLights and SpecularWater are on, the others off.
+  vtkSetMacro(Lighting, bool);
+  vtkGetMacro(Lighting, bool);
+  vtkBooleanMacro(Lighting, bool);
+  vtkSetMacro(NightLights, bool);
+  vtkGetMacro(NightLights, bool);
+  vtkBooleanMacro(NightLights, bool);
+  vtkSetMacro(SpecularWater, bool);
+  vtkGetMacro(SpecularWater, bool);
+  vtkBooleanMacro(SpecularWater, bool);
+  vtkSetMacro(Atmosphere, bool);
+  vtkGetMacro(Atmosphere, bool);
+  vtkBooleanMacro(Atmosphere, bool);
+  vtkSetMacro(Graticule, bool);
+  vtkGetMacro(Graticule, bool);
+  vtkBooleanMacro(Graticule, bool);
+  vtkSetMacro(Contours, bool);
+  vtkGetMacro(Contours, bool);
+  vtkBooleanMacro(Contours, bool);
+  ///@}
+
+  ///@{
+  /// Effect parameters (uniforms: changing them rebuilds nothing).
+  /// Specular: strength and Blinn-Phong exponent. Atmosphere: the sun's intensity.
+  /// Graticule: spacing in degrees; Contours: interval in metres; LineWidth in pixels.
+  vtkSetClampMacro(SpecularStrength, double, 0.0, 10.0);
+  vtkGetMacro(SpecularStrength, double);
+  vtkSetClampMacro(SpecularPower, double, 1.0, 1e4);
+  vtkGetMacro(SpecularPower, double);
+  vtkSetClampMacro(AtmosphereIntensity, double, 0.0, 1e3);
+  vtkGetMacro(AtmosphereIntensity, double);
+  vtkSetClampMacro(GraticuleSpacing, double, 1e-6, 180.0);
+  vtkGetMacro(GraticuleSpacing, double);
+  vtkSetVector3Macro(GraticuleColor, double);
+  vtkGetVector3Macro(GraticuleColor, double);
+  vtkSetClampMacro(ContourInterval, double, 1e-3, 1e7);
+  vtkGetMacro(ContourInterval, double);
+  vtkSetVector3Macro(ContourColor, double);
+  vtkGetVector3Macro(ContourColor, double);
+  vtkSetClampMacro(LineWidth, double, 0.0, 100.0);
+  vtkGetMacro(LineWidth, double);
+  ///@}
+
+  /**
+   * The view of this frame (the mapper sets it): the eye in the body frame (m) and the
+   * 16 elements (row-major) of the matrix from clip coordinates to eye-relative body
+   * coordinates, for per-pixel view rays.
+   */
+  void SetView(const double eye[3], const double clipToEye[16]);
+
+  /// The description the program is generated from (layers and effects).
+  std::string GetShaderKey();
+
   /// GPU time of the pass (seconds) from the last finished frame; -1 without timer queries.
   double GetCompositeTime();
 
@@ -75,6 +137,23 @@ protected:
   double LightColor[3] = { 1, 1, 1 };
   double Ambient = 0.15;
   double BaseColor[3] = { 0.12, 0.2, 0.38 };
+  bool Lighting = true;
+  bool NightLights = true;
+  bool SpecularWater = true;
+  bool Atmosphere = false;
+  bool Graticule = false;
+  bool Contours = false;
+  double SpecularStrength = 0.6;
+  double SpecularPower = 40.0;
+  double AtmosphereIntensity = 20.0;
+  double GraticuleSpacing = 10.0;
+  double GraticuleColor[3] = { 1.0, 1.0, 1.0 };
+  double ContourInterval = 100.0;
+  double ContourColor[3] = { 0.35, 0.2, 0.05 };
+  double LineWidth = 1.5;
+  double Eye[3] = { 0, 0, 0 };
+  double ClipToEye[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+
   vtkOpenGLQuadHelper* Quad = nullptr;
   std::string ShaderKey;
   std::string FragmentSource;
@@ -82,6 +161,7 @@ protected:
   int NumberOfShaderBuilds = 0;
 
 private:
+  std::string BuildFragmentShader();
   vtkGlobeCompositePass(const vtkGlobeCompositePass&) = delete;
   void operator=(const vtkGlobeCompositePass&) = delete;
 };

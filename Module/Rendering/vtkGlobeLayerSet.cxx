@@ -2,6 +2,7 @@
 
 #include "vtkDataArray.h"
 #include "vtkGlobeLayer.h"
+#include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkShaderProgram.h"
@@ -10,6 +11,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -18,30 +20,61 @@ vtkStandardNewMacro(vtkGlobeLayerSet);
 
 namespace
 {
-// Width of the feathered border of a layer that does not cover the whole globe, in texels.
-constexpr double FeatherTexels = 8.0;
+// Largest magnitude passed for an unbounded valid range (a float uniform).
+constexpr double FloatLimit = 3.0e38;
 
 struct Entry
 {
   vtkSmartPointer<vtkGlobeLayer> Layer;
   vtkSmartPointer<vtkTextureObject> Texture;
+  vtkDataArray* UploadedData = nullptr;
   vtkMTimeType UploadedTime = 0;
-  bool Active = false;
-  bool Reported = false; // an error about this layer was reported already
-  // Uniform values, computed when the layer becomes active.
-  double Extent[4] = { 0, 0, 0, 0 }; // west, east-west span, north, north-south span (rad)
-  double Feather[2] = { 0, 0 };       // in texture coordinates
+  int Added = 0;          // insertion index: ties in DrawOrder keep it
+  bool Active = false;    // loaded, valid, supported and enabled
+  bool Reported = false;  // an error about this layer was reported already
+  bool Wraps = false;     // a global geographic layer: longitude wraps, no east/west border
+  double Map[4] = { 0, 0, 0, 0 };    // geographic: west, east-west span, north, span (rad)
+  double Border[4] = { 0, 0, 0, 0 }; // feather u, v (texture coordinates); 1/log(n); unused
 };
+
+const char* RoleFunction(int role)
+{
+  switch (role)
+  {
+    case vtkGlobeLayer::Color:
+      return "Color";
+    case vtkGlobeLayer::NormalMap:
+      return "Normal";
+    case vtkGlobeLayer::Overlay:
+      return "Overlay";
+    case vtkGlobeLayer::Mask:
+      return "Mask";
+    case vtkGlobeLayer::NightLights:
+      return "NightLights";
+    default:
+      return "Height";
+  }
+}
+constexpr int NumberOfRoles = 6;
 } // namespace
 
 class vtkGlobeLayerSet::vtkInternals
 {
 public:
   std::vector<Entry> Entries;
-  std::vector<Entry*> Heights; // active, in order
-  std::vector<Entry*> Colors;
+  // Active layers by role, in composition order; Index[] is the uniform index of each.
+  std::array<std::vector<Entry*>, NumberOfRoles> Roles;
+  int NextAdded = 0;
   double MinimumHeight = 0.0;
   double MaximumHeight = 0.0;
+
+  void ClearActive()
+  {
+    for (auto& list : this->Roles)
+    {
+      list.clear();
+    }
+  }
 };
 
 //------------------------------------------------------------------------------
@@ -61,6 +94,7 @@ void vtkGlobeLayerSet::AddLayer(vtkGlobeLayer* layer)
   }
   Entry entry;
   entry.Layer = layer;
+  entry.Added = this->Internals->NextAdded++;
   this->Internals->Entries.push_back(entry);
   this->Modified();
 }
@@ -73,8 +107,7 @@ void vtkGlobeLayerSet::RemoveLayer(vtkGlobeLayer* layer)
   if (it != entries.end())
   {
     entries.erase(it, entries.end());
-    this->Internals->Heights.clear();
-    this->Internals->Colors.clear();
+    this->Internals->ClearActive();
     this->Modified();
   }
 }
@@ -82,8 +115,7 @@ void vtkGlobeLayerSet::RemoveLayer(vtkGlobeLayer* layer)
 void vtkGlobeLayerSet::RemoveAllLayers()
 {
   this->Internals->Entries.clear();
-  this->Internals->Heights.clear();
-  this->Internals->Colors.clear();
+  this->Internals->ClearActive();
   this->Modified();
 }
 
@@ -105,15 +137,17 @@ vtkGlobeLayer* vtkGlobeLayerSet::GetLayer(int index)
 int vtkGlobeLayerSet::Update()
 {
   auto& in = *this->Internals;
-  in.Heights.clear();
-  in.Colors.clear();
-  in.MinimumHeight = in.MaximumHeight = 0.0;
-  bool firstHeight = true;
+  in.ClearActive();
+  std::vector<Entry*> order;
   for (Entry& e : in.Entries)
   {
     vtkGlobeLayer* layer = e.Layer;
     const char* name = layer->GetFileName() ? layer->GetFileName() : "(in-memory layer)";
     e.Active = false;
+    if (!layer->GetEnabled())
+    {
+      continue;
+    }
     if (!layer->Update() || !layer->IsValid())
     {
       // The layer reported its own error; say once that the globe goes on without it.
@@ -140,28 +174,57 @@ int vtkGlobeLayerSet::Update()
     double extent[4];
     layer->GetGeographicExtent(extent);
     const double deg = vtkMath::Pi() / 180.0;
-    e.Extent[0] = extent[0] * deg;
-    e.Extent[1] = (extent[1] - extent[0]) * deg;
-    e.Extent[2] = extent[3] * deg;
-    e.Extent[3] = (extent[3] - extent[2]) * deg;
-    // Feather the borders of insets; a global layer wraps in longitude and has no border.
-    e.Feather[0] = layer->IsGlobal() ? 0.0 : FeatherTexels / layer->GetWidth();
+    e.Map[0] = extent[0] * deg;
+    e.Map[1] = (extent[1] - extent[0]) * deg;
+    e.Map[2] = extent[3] * deg;
+    e.Map[3] = (extent[3] - extent[2]) * deg;
+    e.Wraps = layer->IsGlobal();
+    // A global layer wraps in longitude and has no east/west border; one that reaches both
+    // poles has no north/south border.
+    const double feather = layer->GetFeatherWidth();
+    e.Border[0] = e.Wraps ? 0.0 : feather / layer->GetWidth();
     const bool polesCovered = extent[2] <= -90.0 && extent[3] >= 90.0;
-    e.Feather[1] = polesCovered ? 0.0 : FeatherTexels / layer->GetHeight();
-    if (layer->GetRole() == vtkGlobeLayer::Height)
+    e.Border[1] = polesCovered ? 0.0 : feather / layer->GetHeight();
+    e.Border[2] = 1.0 / std::log(layer->GetProjectionQualityLimit());
+    order.push_back(&e);
+  }
+  std::stable_sort(order.begin(), order.end(), [](const Entry* a, const Entry* b) {
+    return a->Layer->GetDrawOrder() != b->Layer->GetDrawOrder()
+      ? a->Layer->GetDrawOrder() < b->Layer->GetDrawOrder()
+      : a->Added < b->Added;
+  });
+
+  // Heights: an interval bound of what the composition can give (the PGM spheres need it).
+  in.MinimumHeight = in.MaximumHeight = 0.0;
+  bool first = true;
+  for (Entry* e : order)
+  {
+    vtkGlobeLayer* layer = e->Layer;
+    in.Roles[layer->GetRole()].push_back(e);
+    if (layer->GetRole() != vtkGlobeLayer::Height)
     {
-      in.Heights.push_back(&e);
-      const double lo = layer->GetMinimumValue(), hi = layer->GetMaximumValue();
-      in.MinimumHeight = firstHeight ? lo : std::min(in.MinimumHeight, lo);
-      in.MaximumHeight = firstHeight ? hi : std::max(in.MaximumHeight, hi);
-      firstHeight = false;
+      continue;
+    }
+    const double* valid = layer->GetValidRange();
+    const double lo = std::max(layer->GetMinimumValue(), valid[0]);
+    const double hi = std::min(layer->GetMaximumValue(), valid[1]);
+    if (lo > hi)
+    {
+      continue; // nothing of it is valid
+    }
+    if (layer->GetBlendMode() == vtkGlobeLayer::Add)
+    {
+      in.MinimumHeight += std::min(0.0, lo);
+      in.MaximumHeight += std::max(0.0, hi);
     }
     else
     {
-      in.Colors.push_back(&e);
+      in.MinimumHeight = first ? lo : std::min(in.MinimumHeight, lo);
+      in.MaximumHeight = first ? hi : std::max(in.MaximumHeight, hi);
     }
+    first = false;
   }
-  return static_cast<int>(in.Heights.size() + in.Colors.size());
+  return static_cast<int>(order.size());
 }
 
 double vtkGlobeLayerSet::GetMinimumHeight()
@@ -176,12 +239,16 @@ double vtkGlobeLayerSet::GetMaximumHeight()
 
 int vtkGlobeLayerSet::GetNumberOfActiveHeightLayers()
 {
-  return static_cast<int>(this->Internals->Heights.size());
+  return this->GetNumberOfActiveLayers(vtkGlobeLayer::Height);
 }
 
-int vtkGlobeLayerSet::GetNumberOfActiveColorLayers()
+int vtkGlobeLayerSet::GetNumberOfActiveLayers(int role)
 {
-  return static_cast<int>(this->Internals->Colors.size());
+  if (role < 0 || role >= NumberOfRoles)
+  {
+    return 0;
+  }
+  return static_cast<int>(this->Internals->Roles[role].size());
 }
 
 //------------------------------------------------------------------------------
@@ -195,8 +262,9 @@ void vtkGlobeLayerSet::UploadTextures(vtkOpenGLRenderWindow* window)
     }
     vtkGlobeLayer* layer = e.Layer;
     vtkDataArray* data = layer->GetData();
-    const vtkMTimeType time = std::max(layer->GetMTime(), data->GetMTime());
-    if (e.Texture && e.Texture->GetContext() == window && e.UploadedTime >= time)
+    // Only the data decides: composition settings change the layer's MTime, not its data.
+    if (e.Texture && e.Texture->GetContext() == window && e.UploadedData == data &&
+      e.UploadedTime >= data->GetMTime())
     {
       continue;
     }
@@ -213,20 +281,22 @@ void vtkGlobeLayerSet::UploadTextures(vtkOpenGLRenderWindow* window)
                     << " is " << w << " x " << h << " texels, more than this OpenGL allows ("
                     << maxSize << "); it is skipped");
       e.Active = false;
+      for (auto& list : this->Internals->Roles)
+      {
+        list.erase(std::remove(list.begin(), list.end(), &e), list.end());
+      }
       continue;
     }
     const bool height = layer->GetRole() == vtkGlobeLayer::Height;
-    const int components = height ? 1 : 4;
-    e.Texture->SetWrapS(layer->IsGlobal() ? vtkTextureObject::Repeat : vtkTextureObject::ClampToEdge);
+    e.Texture->SetWrapS(e.Wraps ? vtkTextureObject::Repeat : vtkTextureObject::ClampToEdge);
     e.Texture->SetWrapT(vtkTextureObject::ClampToEdge);
-    e.Texture->SetMagnificationFilter(vtkTextureObject::Linear);
-    e.Texture->SetMinificationFilter(vtkTextureObject::LinearMipmapLinear);
-    e.Texture->Create2DFromRaw(w, h, components, height ? VTK_FLOAT : VTK_UNSIGNED_CHAR,
-      data->GetVoidPointer(0));
+    e.Texture->Create2DFromRaw(
+      w, h, height ? 1 : 4, height ? VTK_FLOAT : VTK_UNSIGNED_CHAR, data->GetVoidPointer(0));
     e.Texture->Bind();
     glGenerateMipmap(GL_TEXTURE_2D);
     e.Texture->Deactivate();
-    e.UploadedTime = time;
+    e.UploadedData = data;
+    e.UploadedTime = data->GetMTime();
     ++this->NumberOfUploads;
   }
 }
@@ -247,13 +317,61 @@ size_t vtkGlobeLayerSet::GetTextureMemory()
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+bool Included(int role, bool withColor)
+{
+  return withColor || role == vtkGlobeLayer::Height;
+}
+
+// The uniform name prefix of the i-th layer of a role ("globeHeight0", "globeColor2", ...).
+std::string Prefix(int role, size_t i)
+{
+  return std::string("globe") + RoleFunction(role) + std::to_string(i);
+}
+
+// Emits one layer's blend into `target` with weight `w` and value `v`. A run of consecutive
+// Average layers accumulates into sumW/sumV and is resolved by ResolveAverage.
+void EmitBlend(std::ostream& s, int mode, const char* target, const char* v)
+{
+  switch (mode)
+  {
+    case vtkGlobeLayer::Add:
+      s << "    " << target << " += w * " << v << ";\n";
+      break;
+    case vtkGlobeLayer::Average:
+      s << "    sumW += w;\n    sumV += w * " << v << ";\n";
+      break;
+    default:
+      s << "    " << target << " = mix(" << target << ", " << v << ", w);\n";
+  }
+}
+
+void EmitResolveAverage(std::ostream& s, const char* target, const char* zero)
+{
+  s << "  if (sumW > 0.0) " << target << " = mix(" << target
+    << ", sumV / sumW, min(sumW, 1.0));\n"
+    << "  sumW = 0.0;\n  sumV = " << zero << ";\n";
+}
+} // namespace
+
 std::string vtkGlobeLayerSet::GetShaderKey(bool withColor)
 {
+  const auto& in = *this->Internals;
   std::ostringstream key;
-  key << "h" << this->Internals->Heights.size();
-  if (withColor)
+  for (int role = 0; role < NumberOfRoles; ++role)
   {
-    key << "c" << this->Internals->Colors.size();
+    if (!Included(role, withColor) || in.Roles[role].empty())
+    {
+      continue;
+    }
+    key << RoleFunction(role)[0] << RoleFunction(role)[1] << "[";
+    for (const Entry* e : in.Roles[role])
+    {
+      key << e->Layer->GetBlendMode() << (e->Wraps ? "w" : "g")
+          << (e->Layer->GetProjectionQualityWeight() ? "q" : "") << ",";
+    }
+    key << "]";
   }
   return key.str();
 }
@@ -262,107 +380,197 @@ std::string vtkGlobeLayerSet::GetShaderCode(bool withColor)
 {
   const auto& in = *this->Internals;
   std::ostringstream s;
-  s << "// Generated by vtkGlobeLayerSet for " << in.Heights.size() << " height and "
-    << in.Colors.size() << " colour layers.\n";
-  for (size_t i = 0; i < in.Heights.size(); ++i)
-  {
-    s << "uniform sampler2D globeHeight" << i << ";\n"
-      << "uniform vec4 globeHeightExtent" << i << ";\n"
-      << "uniform vec2 globeHeightFeather" << i << ";\n";
-  }
-  for (size_t i = 0; withColor && i < in.Colors.size(); ++i)
-  {
-    s << "uniform sampler2D globeColor" << i << ";\n"
-      << "uniform vec4 globeColorExtent" << i << ";\n"
-      << "uniform vec2 globeColorFeather" << i << ";\n";
-  }
-  // Coverage of a layer at (lon, lat): its texture coordinates and a weight in [0, 1] that
-  // falls to 0 across the feathered border and outside the extent. Longitude is taken
-  // modulo 2 pi from the west edge, so layers crossing the date line work too.
-  s << "float globe_layerCoverage(float lon, float lat, vec4 extent, vec2 feather, out vec2 uv)\n"
+  s << "// Generated by vtkGlobeLayerSet: " << this->GetShaderKey(withColor) << "\n";
+  // Shared helpers: texture coordinates of a geographic layer, the coverage weight with its
+  // feathered border, and Kooima's projection-quality weight.
+  s << "const float globe_TwoPi = 6.283185307179586;\n"
+       "vec2 globe_geographicUV(float lon, float lat, vec4 map)\n"
        "{\n"
-       "  float u = mod(lon - extent.x, 6.283185307179586) / extent.y;\n"
-       "  float v = (extent.z - lat) / extent.w;\n"
-       "  uv = vec2(u, v);\n"
-       "  if (u < 0.0 || u > 1.0 || v < 0.0 || v > 1.0) return 0.0;\n"
+       "  return vec2(mod(lon - map.x, globe_TwoPi) / map.y, (map.z - lat) / map.w);\n"
+       "}\n"
+       "float globe_coverage(vec2 uv, vec4 border)\n"
+       "{\n"
+       "  if (uv.x < 0.0 || uv.x > 1.0 || uv.y < 0.0 || uv.y > 1.0) return 0.0;\n"
        "  float w = 1.0;\n"
-       "  if (feather.x > 0.0) w *= clamp(min(u, 1.0 - u) / feather.x, 0.0, 1.0);\n"
-       "  if (feather.y > 0.0) w *= clamp(min(v, 1.0 - v) / feather.y, 0.0, 1.0);\n"
+       "  if (border.x > 0.0) w *= clamp(min(uv.x, 1.0 - uv.x) / border.x, 0.0, 1.0);\n"
+       "  if (border.y > 0.0) w *= clamp(min(uv.y, 1.0 - uv.y) / border.y, 0.0, 1.0);\n"
        "  return w;\n"
-       "}\n";
-  // Texture-coordinate derivatives across the longitude seam jump by a whole turn; wrap them
-  // so mipmap selection does not blur a line of pixels there.
-  s << "vec2 globe_wrapDerivative(vec2 d, float span)\n"
+       "}\n"
+       // k: the texel aspect of the map at (lon, lat): texels per metre east over texels per
+       // metre north, from the texture coordinates of two nearby points.
+       "float globe_quality(vec2 uv, vec2 uvEast, vec2 uvNorth, float cosLat, vec2 size,\n"
+       "  float invLogN, bool wraps)\n"
        "{\n"
-       "  float turn = 6.283185307179586 / span;\n"
-       "  if (abs(d.x) > 0.5 * turn) d.x -= sign(d.x) * turn;\n"
-       "  return d;\n"
-       "}\n";
-  // Heights: value and gradient (per radian of lon and lat), "replace" by weight, in order.
-  s << "float globe_composeHeight(float lon, float lat, vec2 dLonLatdx, vec2 dLonLatdy, "
-       "out vec2 gradient)\n"
+       "  vec2 e = uvEast - uv;\n"
+       "  if (wraps) e.x -= floor(e.x + 0.5);\n"
+       "  float te = length(e * size) / max(cosLat, 1e-6);\n"
+       "  float tn = length((uvNorth - uv) * size);\n"
+       "  if (!(te > 0.0) || !(tn > 0.0)) return 1.0;\n"
+       "  return clamp(1.0 - abs(log(te / tn)) * invLogN, 0.0, 1.0);\n"
+       "}\n"
+       // Screen derivatives of texture coordinates; across a wrapping layer's seam they jump
+       // by a whole turn, which would select the coarsest mipmap along a line of pixels.
+       "void globe_uvDerivatives(vec2 uv, bool wraps, out vec2 dx, out vec2 dy)\n"
        "{\n"
-       "  float h = 0.0;\n"
-       "  vec2 g = vec2(0.0);\n"
-       "  vec2 uv;\n"
-       "  float w;\n";
-  for (size_t i = 0; i < in.Heights.size(); ++i)
-  {
-    const std::string n = std::to_string(i);
-    s << "  w = globe_layerCoverage(lon, lat, globeHeightExtent" << n << ", globeHeightFeather" << n
-      << ", uv);\n"
-      << "  if (w > 0.0)\n"
-      << "  {\n"
-      << "    vec2 scale = vec2(1.0 / globeHeightExtent" << n << ".y, -1.0 / globeHeightExtent" << n
-      << ".w);\n"
-      << "    vec2 dx = globe_wrapDerivative(dLonLatdx, globeHeightExtent" << n << ".y) * scale;\n"
-      << "    vec2 dy = globe_wrapDerivative(dLonLatdy, globeHeightExtent" << n << ".y) * scale;\n"
-      << "    vec2 texel = 1.0 / vec2(textureSize(globeHeight" << n << ", 0));\n"
-      << "    float hi = textureGrad(globeHeight" << n << ", uv, dx, dy).r;\n"
-      << "    float hE = textureGrad(globeHeight" << n << ", uv + vec2(texel.x, 0.0), dx, dy).r;\n"
-      << "    float hW = textureGrad(globeHeight" << n << ", uv - vec2(texel.x, 0.0), dx, dy).r;\n"
-      << "    float hN = textureGrad(globeHeight" << n << ", uv - vec2(0.0, texel.y), dx, dy).r;\n"
-      << "    float hS = textureGrad(globeHeight" << n << ", uv + vec2(0.0, texel.y), dx, dy).r;\n"
-      << "    vec2 gi = vec2((hE - hW) / (2.0 * texel.x * globeHeightExtent" << n << ".y),\n"
-      << "                   (hN - hS) / (2.0 * texel.y * globeHeightExtent" << n << ".w));\n"
-      << "    if (!isnan(hi) && !isnan(gi.x) && !isnan(gi.y))\n"
-      << "    {\n"
-      << "      h = mix(h, hi, w);\n"
-      << "      g = mix(g, gi, w);\n"
-      << "    }\n"
-      << "  }\n";
-  }
-  s << "  gradient = g;\n"
-       "  return h;\n"
+       "  dx = dFdx(uv);\n"
+       "  dy = dFdy(uv);\n"
+       "  if (wraps) { dx.x -= floor(dx.x + 0.5); dy.x -= floor(dy.x + 0.5); }\n"
        "}\n";
-  if (!withColor)
+
+  for (int role = 0; role < NumberOfRoles; ++role)
   {
-    return s.str();
+    const auto& list = in.Roles[role];
+    if (!Included(role, withColor) || list.empty())
+    {
+      continue;
+    }
+    for (size_t i = 0; i < list.size(); ++i)
+    {
+      const std::string p = Prefix(role, i);
+      s << "uniform sampler2D " << p << ";\n"
+        << "uniform vec4 " << p << "Map;\n"
+        << "uniform vec4 " << p << "Style;\n" // opacity, gamma, valid min, valid max
+        << "uniform vec4 " << p << "Border;\n";
+    }
+    const bool height = role == vtkGlobeLayer::Height;
+    const std::string fn = RoleFunction(role);
+    // Signature and accumulator by role.
+    const char* type = "vec3";
+    const char* zero = "vec3(0.0)";
+    const char* target = "c";
+    switch (role)
+    {
+      case vtkGlobeLayer::Height:
+        s << "float globe_composeHeight(float lon, float lat, out vec2 gradient)\n{\n";
+        type = "vec3"; // (h, gradient)
+        zero = "vec3(0.0)";
+        target = "hg";
+        s << "  vec3 hg = vec3(0.0);\n";
+        break;
+      case vtkGlobeLayer::Color:
+        s << "vec3 globe_composeColor(float lon, float lat, vec3 base)\n{\n  vec3 c = base;\n";
+        break;
+      case vtkGlobeLayer::NormalMap:
+        // xyz: the tangent-space normal; w: its summed weight.
+        s << "vec4 globe_composeNormal(float lon, float lat)\n{\n  vec4 c = vec4(0.0, 0.0, 1.0, "
+             "0.0);\n";
+        type = "vec4";
+        zero = "vec4(0.0)";
+        break;
+      case vtkGlobeLayer::Overlay:
+        // Premultiplied: the lit colour becomes lit * (1 - a) + rgb.
+        s << "vec4 globe_composeOverlay(float lon, float lat)\n{\n  vec4 c = vec4(0.0);\n";
+        type = "vec4";
+        zero = "vec4(0.0)";
+        break;
+      case vtkGlobeLayer::Mask:
+        s << "float globe_composeMask(float lon, float lat)\n{\n  float c = 0.0;\n";
+        type = "float";
+        zero = "0.0";
+        break;
+      default:
+        s << "vec3 globe_composeNightLights(float lon, float lat)\n{\n  vec3 c = vec3(0.0);\n";
+    }
+    s << "  float cosLat = cos(lat);\n"
+         "  float w;\n  float sumW = 0.0;\n  "
+      << type << " sumV = " << zero << ";\n"
+      << "  vec2 uv, uvE, uvN, dx, dy;\n";
+    // All texture coordinates and their derivatives first, in uniform control flow.
+    for (size_t i = 0; i < list.size(); ++i)
+    {
+      const Entry* e = list[i];
+      const std::string p = Prefix(role, i);
+      const std::string wraps = e->Wraps ? "true" : "false";
+      s << "  vec2 uv" << i << " = globe_geographicUV(lon, lat, " << p << "Map);\n"
+        << "  vec2 dx" << i << ", dy" << i << ";\n"
+        << "  globe_uvDerivatives(uv" << i << ", " << wraps << ", dx" << i << ", dy" << i << ");\n";
+    }
+    for (size_t i = 0; i < list.size(); ++i)
+    {
+      const Entry* e = list[i];
+      vtkGlobeLayer* layer = e->Layer;
+      const std::string p = Prefix(role, i);
+      const std::string n = std::to_string(i);
+      const int mode = layer->GetBlendMode();
+      s << "  // " << layer->GetRoleAsString() << " layer '" << layer->GetName() << "', "
+        << layer->GetBlendModeAsString() << "\n";
+      s << "  uv = uv" << n << ";\n  dx = dx" << n << ";\n  dy = dy" << n << ";\n";
+      s << "  w = globe_coverage(uv, " << p << "Border) * " << p << "Style.x;\n";
+      if (layer->GetProjectionQualityWeight())
+      {
+        s << "  uvE = globe_geographicUV(lon + 1e-3, lat, " << p << "Map);\n"
+          << "  uvN = globe_geographicUV(lon, lat + 1e-3, " << p << "Map);\n"
+          << "  w *= globe_quality(uv, uvE, uvN, cosLat, vec2(textureSize(" << p << ", 0)), " << p
+          << "Border.z, " << (e->Wraps ? "true" : "false") << ");\n";
+      }
+      s << "  if (w > 0.0)\n  {\n";
+      if (height)
+      {
+        // Value and gradient per radian of lon and lat (central differences one texel apart).
+        s << "    vec2 texel = 1.0 / vec2(textureSize(" << p << ", 0));\n"
+          << "    float v = textureGrad(" << p << ", uv, dx, dy).r;\n"
+          << "    float vE = textureGrad(" << p << ", uv + vec2(texel.x, 0.0), dx, dy).r;\n"
+          << "    float vW = textureGrad(" << p << ", uv - vec2(texel.x, 0.0), dx, dy).r;\n"
+          << "    float vN = textureGrad(" << p << ", uv - vec2(0.0, texel.y), dx, dy).r;\n"
+          << "    float vS = textureGrad(" << p << ", uv + vec2(0.0, texel.y), dx, dy).r;\n"
+          << "    vec2 gi = vec2((vE - vW) / (2.0 * texel.x * " << p << "Map.y),\n"
+          << "                   (vN - vS) / (2.0 * texel.y * " << p << "Map.w));\n"
+          << "    bool valid = !isnan(v) && !isnan(gi.x) && !isnan(gi.y) && v >= " << p
+          << "Style.z && v <= " << p << "Style.w;\n"
+          << "    if (!valid) w = 0.0;\n"
+          << "    vec3 value = valid ? vec3(v, gi) : vec3(0.0);\n";
+        EmitBlend(s, mode, target, "value");
+      }
+      else
+      {
+        s << "    vec4 t = textureGrad(" << p << ", uv, dx, dy);\n"
+          << "    w *= t.a;\n"
+          << "    vec3 rgb = pow(t.rgb, vec3(" << p << "Style.y));\n";
+        switch (role)
+        {
+          case vtkGlobeLayer::NormalMap:
+            s << "    vec4 value = vec4(normalize(2.0 * t.rgb - 1.0), 1.0);\n";
+            EmitBlend(s, mode, target, "value");
+            break;
+          case vtkGlobeLayer::Mask:
+            EmitBlend(s, mode, target, "rgb.r");
+            break;
+          case vtkGlobeLayer::Overlay:
+            EmitBlend(s, mode, target, "vec4(rgb, 1.0)");
+            break;
+          default:
+            EmitBlend(s, mode, target, "rgb");
+        }
+      }
+      s << "  }\n";
+      const bool lastOfRun = i + 1 == list.size() ||
+        list[i + 1]->Layer->GetBlendMode() != vtkGlobeLayer::Average;
+      if (mode == vtkGlobeLayer::Average && lastOfRun)
+      {
+        EmitResolveAverage(s, target, zero);
+      }
+    }
+    switch (role)
+    {
+      case vtkGlobeLayer::Height:
+        s << "  gradient = hg.yz;\n  return hg.x;\n}\n";
+        break;
+      case vtkGlobeLayer::NormalMap:
+        s << "  return vec4(normalize(c.xyz), min(c.w, 1.0));\n}\n";
+        break;
+      case vtkGlobeLayer::Overlay:
+        s << "  return vec4(c.rgb, min(c.a, 1.0));\n}\n";
+        break;
+      default:
+        s << "  return c;\n}\n";
+    }
   }
-  // Colours: RGBA; coverage times alpha is the weight.
-  s << "vec4 globe_composeColor(float lon, float lat, vec2 dLonLatdx, vec2 dLonLatdy)\n"
-       "{\n"
-       "  vec4 c = vec4(0.0);\n"
-       "  vec2 uv;\n"
-       "  float w;\n";
-  for (size_t i = 0; i < in.Colors.size(); ++i)
+  if (in.Roles[vtkGlobeLayer::Height].empty())
   {
-    const std::string n = std::to_string(i);
-    s << "  w = globe_layerCoverage(lon, lat, globeColorExtent" << n << ", globeColorFeather" << n
-      << ", uv);\n"
-      << "  if (w > 0.0)\n"
-      << "  {\n"
-      << "    vec2 scale = vec2(1.0 / globeColorExtent" << n << ".y, -1.0 / globeColorExtent" << n
-      << ".w);\n"
-      << "    vec4 ci = textureGrad(globeColor" << n << ", uv,\n"
-      << "      globe_wrapDerivative(dLonLatdx, globeColorExtent" << n << ".y) * scale,\n"
-      << "      globe_wrapDerivative(dLonLatdy, globeColorExtent" << n << ".y) * scale);\n"
-      << "    float a = w * ci.a;\n"
-      << "    c = vec4(mix(c.rgb, ci.rgb, a), max(c.a, a));\n"
-      << "  }\n";
+    // Always defined: the passes call it.
+    s << "float globe_composeHeight(float lon, float lat, out vec2 gradient)\n"
+         "{\n  gradient = vec2(0.0);\n  return 0.0;\n}\n";
   }
-  s << "  return c;\n"
-       "}\n";
   return s.str();
 }
 
@@ -370,35 +578,52 @@ std::string vtkGlobeLayerSet::GetShaderCode(bool withColor)
 void vtkGlobeLayerSet::BindTextures(vtkShaderProgram* program, bool withColor)
 {
   const auto& in = *this->Internals;
-  auto bind = [program](Entry* e, const std::string& prefix, size_t i) {
-    const std::string n = std::to_string(i);
-    e->Texture->Activate();
-    program->SetUniformi((prefix + n).c_str(), e->Texture->GetTextureUnit());
-    const float extent[4] = { static_cast<float>(e->Extent[0]), static_cast<float>(e->Extent[1]),
-      static_cast<float>(e->Extent[2]), static_cast<float>(e->Extent[3]) };
-    program->SetUniform4f((prefix + "Extent" + n).c_str(), extent);
-    const float feather[2] = { static_cast<float>(e->Feather[0]), static_cast<float>(e->Feather[1]) };
-    program->SetUniform2f((prefix + "Feather" + n).c_str(), feather);
-  };
-  for (size_t i = 0; i < in.Heights.size(); ++i)
+  for (int role = 0; role < NumberOfRoles; ++role)
   {
-    bind(in.Heights[i], "globeHeight", i);
-  }
-  for (size_t i = 0; withColor && i < in.Colors.size(); ++i)
-  {
-    bind(in.Colors[i], "globeColor", i);
+    if (!Included(role, withColor))
+    {
+      continue;
+    }
+    const auto& list = in.Roles[role];
+    for (size_t i = 0; i < list.size(); ++i)
+    {
+      Entry* e = list[i];
+      vtkGlobeLayer* layer = e->Layer;
+      const std::string p = Prefix(role, i);
+      const bool nearest = layer->GetInterpolation() == vtkGlobeLayer::Nearest;
+      e->Texture->SetMagnificationFilter(
+        nearest ? vtkTextureObject::Nearest : vtkTextureObject::Linear);
+      e->Texture->SetMinificationFilter(
+        nearest ? vtkTextureObject::Nearest : vtkTextureObject::LinearMipmapLinear);
+      e->Texture->Activate();
+      program->SetUniformi(p.c_str(), e->Texture->GetTextureUnit());
+      auto f4 = [](const double v[4]) {
+        return std::array<float, 4>{ static_cast<float>(v[0]), static_cast<float>(v[1]),
+          static_cast<float>(v[2]), static_cast<float>(v[3]) };
+      };
+      const double* valid = layer->GetValidRange();
+      const double style[4] = { layer->GetOpacity(), layer->GetGamma(),
+        std::max(valid[0], -FloatLimit), std::min(valid[1], FloatLimit) };
+      program->SetUniform4f((p + "Map").c_str(), f4(e->Map).data());
+      program->SetUniform4f((p + "Style").c_str(), f4(style).data());
+      program->SetUniform4f((p + "Border").c_str(), f4(e->Border).data());
+    }
   }
 }
 
 void vtkGlobeLayerSet::UnbindTextures(bool withColor)
 {
-  for (Entry* e : this->Internals->Heights)
+  const auto& in = *this->Internals;
+  for (int role = 0; role < NumberOfRoles; ++role)
   {
-    e->Texture->Deactivate();
-  }
-  for (size_t i = 0; withColor && i < this->Internals->Colors.size(); ++i)
-  {
-    this->Internals->Colors[i]->Texture->Deactivate();
+    if (!Included(role, withColor))
+    {
+      continue;
+    }
+    for (Entry* e : in.Roles[role])
+    {
+      e->Texture->Deactivate();
+    }
   }
 }
 
@@ -410,6 +635,7 @@ void vtkGlobeLayerSet::ReleaseGraphicsResources(vtkWindow* window)
     {
       e.Texture->ReleaseGraphicsResources(window);
       e.Texture = nullptr;
+      e.UploadedData = nullptr;
       e.UploadedTime = 0;
     }
   }
@@ -422,7 +648,8 @@ void vtkGlobeLayerSet::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Layers: " << this->Internals->Entries.size() << "\n";
   for (const Entry& e : this->Internals->Entries)
   {
-    os << indent.GetNextIndent() << (e.Layer->GetFileName() ? e.Layer->GetFileName() : "(in-memory)")
+    os << indent.GetNextIndent() << e.Layer->GetRoleAsString() << " "
+       << (e.Layer->GetFileName() ? e.Layer->GetFileName() : "(in-memory)")
        << (e.Active ? " (active)" : " (inactive)") << "\n";
   }
   os << indent << "NumberOfUploads: " << this->NumberOfUploads << "\n";

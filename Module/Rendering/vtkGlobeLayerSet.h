@@ -2,16 +2,28 @@
  * @class   vtkGlobeLayerSet
  * @brief   The GPU side of a globe's layers: textures, and GLSL generated for exactly them.
  *
- * Holds the ordered layers of a globe (vtkGlobeLayer, first = bottom), uploads each one to a
- * texture when it changed (and only then: GetNumberOfUploads() counts them), and generates the
- * GLSL that composes them, with one unrolled block per active layer:
- *   float globe_composeHeight(float lon, float lat, vec2 dUVdx, vec2 dUVdy,
- *                             out vec2 gradient)     // metres; gradient per radian (lon, lat)
- *   vec4  globe_composeColor(float lon, float lat)     // premultiplied by coverage
- * Layers are composed in order with "replace" weighted by coverage (extent, nodata) and a
- * feathered border, so detailed insets blend into a coarse base without a seam.
- * The generated source changes only when the set of active layers or their roles change, so
- * shader programs are rebuilt only then (GetShaderKey()).
+ * Holds the layers of a globe (vtkGlobeLayer), uploads each one to a texture when its data
+ * changed (and only then: GetNumberOfUploads() counts them), and generates the GLSL that
+ * composes the enabled ones, in increasing DrawOrder (ties: the order they were added), one
+ * unrolled block per layer:
+ *   float globe_composeHeight(float lon, float lat, out vec2 gradient)
+ *       metres, and the gradient per radian of (lon, lat); grid pass and screen pass;
+ *   vec3  globe_composeColor(float lon, float lat, vec3 base)     Color layers over a base;
+ *   vec4  globe_composeNormal(float lon, float lat)               NormalMap: ENU normal, weight;
+ *   float globe_composeMask(float lon, float lat)                 Mask (water = 1);
+ *   vec3  globe_composeNightLights(float lon, float lat)          NightLights;
+ *   vec4  globe_composeOverlay(float lon, float lat)   Overlay, premultiplied: lit*(1-a) + rgb.
+ * The functions of roles without layers are absent. Each must be called in uniform control
+ * flow (they take screen derivatives to choose mipmap levels).
+ *
+ * A layer's weight is its coverage (inside the extent, not nodata / NaN / outside its valid
+ * range, the alpha of images) times its feathered border, its opacity and, if asked for,
+ * Kooima's projection-quality weight; it blends by the layer's BlendMode. Where every weight
+ * is zero the layers below (or the base) show; nothing divides by a zero sum.
+ *
+ * The generated source depends only on the roles, order, blend modes, projections and
+ * quality flags of the enabled layers (GetShaderKey()); opacity, gamma, valid range, feather
+ * width and filtering are uniforms or sampler state, so changing them rebuilds nothing.
  */
 #ifndef vtkGlobeLayerSet_h
 #define vtkGlobeLayerSet_h
@@ -55,14 +67,16 @@ public:
   double GetMinimumHeight();
   double GetMaximumHeight();
   int GetNumberOfActiveHeightLayers();
-  int GetNumberOfActiveColorLayers();
+  /// Active layers of one role (vtkGlobeLayer::Roles).
+  int GetNumberOfActiveLayers(int role);
+  int GetNumberOfActiveColorLayers() { return this->GetNumberOfActiveLayers(1); }
   ///@}
 
   /// Uploads changed layers to textures (needs a current context).
   void UploadTextures(vtkOpenGLRenderWindow* window);
 
   /// GLSL declarations and functions for the active layers: the height layers only
-  /// (globe_composeHeight), or with the colour layers too (and globe_composeColor).
+  /// (withColor false: the grid pass), or every role (the screen pass).
   std::string GetShaderCode(bool withColor = true);
 
   /// A key that changes exactly when GetShaderCode(withColor) would.

@@ -234,6 +234,93 @@ double* vtkGlobeMapper::GetBounds()
   return in.Bounds;
 }
 
+
+//------------------------------------------------------------------------------
+// Effects: forwarded to the composition pass.
+void vtkGlobeMapper::SetLighting(bool on)
+{
+  if (this->Internals->Composite->GetLighting() != on)
+  {
+    this->Internals->Composite->SetLighting(on);
+    this->Modified();
+  }
+}
+
+bool vtkGlobeMapper::GetLighting()
+{
+  return this->Internals->Composite->GetLighting();
+}
+
+void vtkGlobeMapper::SetNightLights(bool on)
+{
+  if (this->Internals->Composite->GetNightLights() != on)
+  {
+    this->Internals->Composite->SetNightLights(on);
+    this->Modified();
+  }
+}
+
+bool vtkGlobeMapper::GetNightLights()
+{
+  return this->Internals->Composite->GetNightLights();
+}
+
+void vtkGlobeMapper::SetSpecularWater(bool on)
+{
+  if (this->Internals->Composite->GetSpecularWater() != on)
+  {
+    this->Internals->Composite->SetSpecularWater(on);
+    this->Modified();
+  }
+}
+
+bool vtkGlobeMapper::GetSpecularWater()
+{
+  return this->Internals->Composite->GetSpecularWater();
+}
+
+void vtkGlobeMapper::SetAtmosphere(bool on)
+{
+  if (this->Internals->Composite->GetAtmosphere() != on)
+  {
+    this->Internals->Composite->SetAtmosphere(on);
+    this->Modified();
+  }
+}
+
+bool vtkGlobeMapper::GetAtmosphere()
+{
+  return this->Internals->Composite->GetAtmosphere();
+}
+
+void vtkGlobeMapper::SetGraticule(bool on)
+{
+  if (this->Internals->Composite->GetGraticule() != on)
+  {
+    this->Internals->Composite->SetGraticule(on);
+    this->Modified();
+  }
+}
+
+bool vtkGlobeMapper::GetGraticule()
+{
+  return this->Internals->Composite->GetGraticule();
+}
+
+void vtkGlobeMapper::SetContours(bool on)
+{
+  if (this->Internals->Composite->GetContours() != on)
+  {
+    this->Internals->Composite->SetContours(on);
+    this->Modified();
+  }
+}
+
+bool vtkGlobeMapper::GetContours()
+{
+  return this->Internals->Composite->GetContours();
+}
+
 //------------------------------------------------------------------------------
 void vtkGlobeMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
@@ -519,6 +606,17 @@ bool vtkGlobeMapper::RenderGBuffer(vtkRenderer* ren, vtkActor* act, int width, i
   vtkMatrix4x4::Multiply4x4(view, model, eyeToClip);
   vtkMatrix4x4::Multiply4x4(
     camera->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1), eyeToClip, eyeToClip);
+  {
+    // The composition casts per-pixel view rays with the inverse.
+    vtkNew<vtkMatrix4x4> clipToEye;
+    vtkMatrix4x4::Invert(eyeToClip, clipToEye);
+    double eyeBody[4] = { 0, 0, 0, 1 };
+    camera->GetPosition(eyeBody);
+    vtkNew<vtkMatrix4x4> worldToBody;
+    vtkMatrix4x4::Invert(act->GetMatrix(), worldToBody);
+    worldToBody->MultiplyPoint(eyeBody, eyeBody);
+    in.Composite->SetView(eyeBody, clipToEye->GetData());
+  }
   float columnMajor[16];
   for (int r = 0; r < 4; ++r)
   {

@@ -83,6 +83,39 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Effects of the screen composition (vtkGlobeCompositePass; its parameters are there):
+   * the shader holds the code of the effects that are on, and only of those. Lighting,
+   * NightLights (needs NightLights layers) and SpecularWater (needs Mask layers) are on;
+   * Atmosphere, Graticule and Contours are off.
+   */
+  void SetLighting(bool on);
+  bool GetLighting();
+  void LightingOn() { this->SetLighting(true); }
+  void LightingOff() { this->SetLighting(false); }
+  void SetNightLights(bool on);
+  bool GetNightLights();
+  void NightLightsOn() { this->SetNightLights(true); }
+  void NightLightsOff() { this->SetNightLights(false); }
+  void SetSpecularWater(bool on);
+  bool GetSpecularWater();
+  void SpecularWaterOn() { this->SetSpecularWater(true); }
+  void SpecularWaterOff() { this->SetSpecularWater(false); }
+  void SetAtmosphere(bool on);
+  bool GetAtmosphere();
+  void AtmosphereOn() { this->SetAtmosphere(true); }
+  void AtmosphereOff() { this->SetAtmosphere(false); }
+  void SetGraticule(bool on);
+  bool GetGraticule();
+  void GraticuleOn() { this->SetGraticule(true); }
+  void GraticuleOff() { this->SetGraticule(false); }
+  void SetContours(bool on);
+  bool GetContours();
+  void ContoursOn() { this->SetContours(true); }
+  void ContoursOff() { this->SetContours(false); }
+  ///@}
+
+  ///@{
   /// The parts of a frame, for inspection, tests and benchmarks.
   vtkGlobeProjectiveGrid* GetProjectiveGrid();
   vtkGlobeGridPass* GetGridPass();

@@ -1,23 +1,30 @@
 //VTK::System::Dec
 //VTK::Output::Dec
 // Screen composition (deferred texturing): per pixel, the G-buffer's direction gives the
-// geodetic (lon, lat); the colour and height layers are composed there at the window's
-// resolution; terrain normals come from the composed height gradient; then the enabled
-// effects. Writes colour and the G-buffer's depth into the renderer's framebuffer, with the
-// depth test on, so other actors occlude the globe and are occluded by it.
+// geodetic (lon, lat); the layers are composed there at the window's resolution; terrain
+// normals come from the composed height gradient; then the enabled effects. The //GLOBE::
+// markers are replaced by vtkGlobeCompositePass with the code of the enabled effects only
+// (or nothing). Writes colour and the G-buffer's depth into the renderer's framebuffer, with
+// the depth test on, so other actors occlude the globe and are occluded by it.
 in vec2 texCoord;
 
 //GLOBE::Math
 //GLOBE::Layers
+//GLOBE::EffectFunctions
 
 uniform sampler2D globeGBuffer;
 uniform sampler2D globeDepth;
 uniform vec3 globeRadiiScaled;
 uniform float globeMeanRadius;
+uniform float globeMaximumRadius;
 uniform vec3 globeLightDirection;
 uniform vec3 globeLightColor;
 uniform float globeAmbient;
 uniform vec3 globeBaseColor;
+// The eye in the body frame in units of the largest radius, and clip -> eye-relative body
+// coordinates (directions only).
+uniform vec3 globeEye;
+uniform mat4 globeClipToEye;
 
 void main()
 {
@@ -29,28 +36,37 @@ void main()
   float lon;
   float lat;
   globe_lonLatFromNormal(n, lon, lat);
-  // Derivatives are taken before any discard, so every 2x2 quad has them.
-  vec2 ll = vec2(lon, lat);
-  vec2 dx = dFdx(ll);
-  vec2 dy = dFdy(ll);
+  vec4 far = globeClipToEye * vec4(2.0 * texCoord - 1.0, 1.0, 1.0);
+  vec3 ray = globe_normalize(far.xyz / far.w);
+
+  // Everything that takes screen derivatives runs before any discard, so every 2x2 quad
+  // has them.
   vec2 gradient;
-  globe_composeHeight(lon, lat, dx, dy, gradient);
-  vec4 layerColor = globe_composeColor(lon, lat, dx, dy);
+  float h = globe_composeHeight(lon, lat, gradient);
+  vec3 albedo = globeBaseColor;
+  float lines = 0.0;
+  vec3 lineColor = vec3(0.0);
+  //GLOBE::Sample
+
   if (!covered)
   {
+    //GLOBE::Sky
     discard;
   }
-  vec3 albedo = mix(globeBaseColor, layerColor.rgb, layerColor.a);
 
   // Terrain normal: the geodetic normal tilted by the slope (per metre east and north).
   float cosLat = max(cos(lat), 1e-6);
   vec3 east = vec3(-sin(lon), cos(lon), 0.0);
   vec3 north = vec3(-sin(lat) * cos(lon), -sin(lat) * sin(lon), cos(lat));
-  vec2 slope = vec2(gradient.x / (globeMeanRadius * cosLat), gradient.y / globeMeanRadius);
-  vec3 normal = normalize(n - slope.x * east - slope.y * north);
+  vec3 tangentNormal =
+    vec3(-gradient.x / (globeMeanRadius * cosLat), -gradient.y / globeMeanRadius, 1.0);
+  //GLOBE::Normal
+  tangentNormal = globe_normalize(tangentNormal);
+  vec3 normal = tangentNormal.x * east + tangentNormal.y * north + tangentNormal.z * n;
 
-  float diffuse = max(dot(normal, globeLightDirection), 0.0);
-  vec3 color = albedo * (globeAmbient + (1.0 - globeAmbient) * diffuse * globeLightColor);
+  vec3 color = albedo;
+  //GLOBE::Shade
+  color = mix(color, lineColor, lines);
   gl_FragData[0] = vec4(color, 1.0);
   gl_FragDepth = depth;
 }

@@ -19,8 +19,7 @@ void main()
   float lon;
   float lat;
   globe_lonLatFromNormal(n, lon, lat);
-  vec2 ll = vec2(lon, lat);
   vec2 gradient;
-  float h = globe_composeHeight(lon, lat, dFdx(ll), dFdy(ll), gradient);
+  float h = globe_composeHeight(lon, lat, gradient);
   gl_FragData[0] = vec4(h, 0.0, 0.0, 1.0);
 }
