@@ -188,11 +188,11 @@ void vtkGlobeCompositePass::Render(const vtkRenderState* s)
       .data());
   p->SetUniform3f("globeGraticuleColor", f3(this->GraticuleColor).data());
   p->SetUniform3f("globeContourColor", f3(this->ContourColor).data());
-  this->Layers->BindTextures(p);
+  this->Layers->BindTextures(p, this->GetRoles());
 
   this->Quad->Render();
 
-  this->Layers->UnbindTextures();
+  this->Layers->UnbindTextures(this->GetRoles());
   this->Depth->Deactivate();
   this->GBuffer->Deactivate();
   this->Timer->ReusableStop();
@@ -207,17 +207,34 @@ void vtkGlobeCompositePass::SetView(const double eye[3], const double clipToEye[
   std::copy(clipToEye, clipToEye + 16, this->ClipToEye);
 }
 
+int vtkGlobeCompositePass::GetRoles()
+{
+  // Night lights and water masks only matter to the effects that use them, lit.
+  int roles = vtkGlobeLayerSet::AllRoles;
+  const int count[2] = { this->Layers->GetNumberOfActiveLayers(vtkGlobeLayer::NightLights),
+    this->Layers->GetNumberOfActiveLayers(vtkGlobeLayer::Mask) };
+  if (!this->Lighting || !this->NightLights || !count[0])
+  {
+    roles &= ~(1 << vtkGlobeLayer::NightLights);
+  }
+  if (!this->Lighting || !this->SpecularWater || !count[1])
+  {
+    roles &= ~(1 << vtkGlobeLayer::Mask);
+  }
+  return roles;
+}
+
 std::string vtkGlobeCompositePass::GetShaderKey()
 {
   if (!this->Layers)
   {
     return std::string();
   }
-  std::string key = this->Layers->GetShaderKey(true) + "|";
-  const bool lit = this->Lighting;
-  key += lit ? "L" : "";
-  key += lit && this->NightLights && this->Layers->GetNumberOfActiveLayers(vtkGlobeLayer::NightLights) ? "N" : "";
-  key += lit && this->SpecularWater && this->Layers->GetNumberOfActiveLayers(vtkGlobeLayer::Mask) ? "S" : "";
+  const int roles = this->GetRoles();
+  std::string key = this->Layers->GetShaderKey(roles) + "|";
+  key += this->Lighting ? "L" : "";
+  key += (roles >> vtkGlobeLayer::NightLights) & 1 ? "N" : "";
+  key += (roles >> vtkGlobeLayer::Mask) & 1 ? "S" : "";
   key += this->Atmosphere ? "A" : "";
   key += this->Graticule ? "G" : "";
   key += this->Contours ? "C" : "";
@@ -330,7 +347,7 @@ std::string vtkGlobeCompositePass::BuildFragmentShader()
   }
   using vtkGlobeShaderSources::Replace;
   std::string fs = Replace(vtkGlobeCompositeFS, "//GLOBE::Math", vtkGlobeShaderSources::Math());
-  fs = Replace(fs, "//GLOBE::Layers", layers->GetShaderCode(true));
+  fs = Replace(fs, "//GLOBE::Layers", layers->GetShaderCode(this->GetRoles()));
   fs = Replace(fs, "//GLOBE::EffectFunctions", functions);
   fs = Replace(fs, "//GLOBE::Sample", sample);
   fs = Replace(fs, "//GLOBE::Sky", sky);

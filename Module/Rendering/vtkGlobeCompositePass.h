@@ -162,6 +162,7 @@ protected:
 
 private:
   std::string BuildFragmentShader();
+  int GetRoles();
   vtkGlobeCompositePass(const vtkGlobeCompositePass&) = delete;
   void operator=(const vtkGlobeCompositePass&) = delete;
 };

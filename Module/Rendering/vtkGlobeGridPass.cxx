@@ -137,7 +137,7 @@ bool vtkGlobeGridPass::Prepare(vtkOpenGLRenderWindow* window)
   }
   // The height program is generated from the active height layers: rebuild only when they
   // change.
-  const std::string key = this->Layers->GetShaderKey(false);
+  const std::string key = this->Layers->GetShaderKey(vtkGlobeLayerSet::HeightRoles);
   if (this->HeightQuad && key != this->HeightShaderKey)
   {
     delete this->HeightQuad;
@@ -147,7 +147,7 @@ bool vtkGlobeGridPass::Prepare(vtkOpenGLRenderWindow* window)
   {
     std::string fs = vtkGlobeShaderSources::Replace(
       vtkGlobeGridHeightFS, "//GLOBE::Math", vtkGlobeShaderSources::Math());
-    fs = vtkGlobeShaderSources::Replace(fs, "//GLOBE::Layers", this->Layers->GetShaderCode(false));
+    fs = vtkGlobeShaderSources::Replace(fs, "//GLOBE::Layers", this->Layers->GetShaderCode(vtkGlobeLayerSet::HeightRoles));
     this->HeightQuad = new vtkOpenGLQuadHelper(window, vs.c_str(), fs.c_str(), "");
     this->HeightShaderKey = key;
     ++this->NumberOfShaderBuilds;
@@ -231,9 +231,9 @@ void vtkGlobeGridPass::Render(const vtkRenderState* s)
   this->DirectionTexture->Activate();
   p->SetUniformi("globeDirection", this->DirectionTexture->GetTextureUnit());
   vtkGlobeShaderSources::SetRadii(p, grid->GetEllipsoid());
-  this->Layers->BindTextures(p, false);
+  this->Layers->BindTextures(p, vtkGlobeLayerSet::HeightRoles);
   this->HeightQuad->Render();
-  this->Layers->UnbindTextures(false);
+  this->Layers->UnbindTextures(vtkGlobeLayerSet::HeightRoles);
   this->DirectionTexture->Deactivate();
   this->Framebuffer->RemoveColorAttachments(1);
   this->HeightTimer->ReusableStop();

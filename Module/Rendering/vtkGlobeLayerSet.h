@@ -75,16 +75,23 @@ public:
   /// Uploads changed layers to textures (needs a current context).
   void UploadTextures(vtkOpenGLRenderWindow* window);
 
-  /// GLSL declarations and functions for the active layers: the height layers only
-  /// (withColor false: the grid pass), or every role (the screen pass).
-  std::string GetShaderCode(bool withColor = true);
+  /// Bit masks of roles (1 << vtkGlobeLayer::Roles) for the calls below.
+  enum RoleMasks
+  {
+    HeightRoles = 1,
+    AllRoles = 63
+  };
 
-  /// A key that changes exactly when GetShaderCode(withColor) would.
-  std::string GetShaderKey(bool withColor = true);
+  /// GLSL declarations and functions for the active layers of the roles in the mask: the
+  /// grid pass asks for the heights only, the screen pass for the roles its effects use.
+  std::string GetShaderCode(int roles = AllRoles);
+
+  /// A key that changes exactly when GetShaderCode(roles) would.
+  std::string GetShaderKey(int roles = AllRoles);
 
   /// Binds the textures and sets the uniforms of the generated code on a ready program.
-  void BindTextures(vtkShaderProgram* program, bool withColor = true);
-  void UnbindTextures(bool withColor = true);
+  void BindTextures(vtkShaderProgram* program, int roles = AllRoles);
+  void UnbindTextures(int roles = AllRoles);
 
   /// Texture uploads so far (a layer is uploaded when it, or its data, changed).
   vtkGetMacro(NumberOfUploads, int);

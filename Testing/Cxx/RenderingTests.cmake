@@ -2,6 +2,8 @@
 # Testing/Baseline (VTK's vtkRegressionTestImageThreshold); a missing or failing image is written
 # to the build's Testing/Temporary folder for inspection.
 set(globe_rendering_tests
+  TestGlobeComposition.cxx
+  TestGlobeEffects.cxx
   TestGlobeEverestHorizon.cxx
   TestGlobeFarAway.cxx
   TestGlobeGridPass.cxx

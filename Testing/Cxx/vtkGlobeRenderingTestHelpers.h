@@ -235,37 +235,90 @@ inline double FinestTexel(const std::vector<vtkGlobeLayer*>& layers, double lon,
   return best;
 }
 
-/// The composed terrain height at (lon, lat) as vtkGlobeLayerSet composes it on the GPU:
-/// layers in order, "replace" weighted by coverage and an 8-texel feathered border for layers
-/// that do not cover the globe. (A C++ mirror of the generated GLSL, for tests.)
-inline double ComposedHeight(const std::vector<vtkGlobeLayer*>& layers, double lon, double lat)
+/// The weight of a layer's coverage at (lon, lat) in degrees (0 outside), with its feathered
+/// border, as the generated GLSL computes it, before opacity and data validity.
+inline double CoverageWeight(vtkGlobeLayer* layer, double lon, double lat)
 {
-  double h = 0.0;
+  double e[4];
+  layer->GetGeographicExtent(e);
+  const double u = std::fmod(lon - e[0] + 720.0, 360.0) / (e[1] - e[0]);
+  const double v = (e[3] - lat) / (e[3] - e[2]);
+  if (u < 0 || u > 1 || v < 0 || v > 1)
+  {
+    return 0.0;
+  }
+  double w = 1.0;
+  const double feather = layer->GetFeatherWidth();
+  if (feather > 0 && !layer->IsGlobal())
+  {
+    w *= std::min(1.0, std::min(u, 1.0 - u) * layer->GetWidth() / feather);
+  }
+  if (feather > 0 && !(e[2] <= -90.0 && e[3] >= 90.0))
+  {
+    w *= std::min(1.0, std::min(v, 1.0 - v) * layer->GetHeight() / feather);
+  }
+  return w;
+}
+
+/// The enabled, valid layers of one role in composition order (DrawOrder, then as added).
+inline std::vector<vtkGlobeLayer*> CompositionOrder(const std::vector<vtkGlobeLayer*>& layers, int role)
+{
+  std::vector<vtkGlobeLayer*> order;
   for (vtkGlobeLayer* layer : layers)
   {
-    if (layer->GetRole() != vtkGlobeLayer::Height || !layer->IsValid())
+    if (layer->GetRole() == role && layer->GetEnabled() && layer->IsValid())
     {
-      continue;
+      order.push_back(layer);
     }
-    double value;
-    if (!SampleHeight(layer, lon, lat, value) || std::isnan(value))
+  }
+  std::stable_sort(order.begin(), order.end(), [](vtkGlobeLayer* a, vtkGlobeLayer* b) {
+    return a->GetDrawOrder() < b->GetDrawOrder();
+  });
+  return order;
+}
+
+/// The composed terrain height at (lon, lat) as vtkGlobeLayerSet composes it on the GPU (a C++
+/// mirror of the generated GLSL, for tests): layers in composition order, each weighted by
+/// coverage, feathered border and opacity (zero where its value is NaN or outside its valid
+/// range), blended by its mode; a run of Average layers replaces by its weighted mean.
+inline double ComposedHeight(const std::vector<vtkGlobeLayer*>& layers, double lon, double lat)
+{
+  const std::vector<vtkGlobeLayer*> order = CompositionOrder(layers, vtkGlobeLayer::Height);
+  double h = 0.0, sumW = 0.0, sumV = 0.0;
+  for (size_t i = 0; i < order.size(); ++i)
+  {
+    vtkGlobeLayer* layer = order[i];
+    double value = 0.0;
+    double w = 0.0;
+    if (SampleHeight(layer, lon, lat, value) && !std::isnan(value) &&
+      value >= layer->GetValidRange()[0] && value <= layer->GetValidRange()[1])
     {
-      continue;
+      w = CoverageWeight(layer, lon, lat) * layer->GetOpacity();
     }
-    double e[4];
-    layer->GetGeographicExtent(e);
-    const double u = std::fmod(lon - e[0] + 720.0, 360.0) / (e[1] - e[0]);
-    const double v = (e[3] - lat) / (e[3] - e[2]);
-    double w = 1.0;
-    if (!layer->IsGlobal())
+    else
     {
-      w *= std::min(1.0, std::min(u, 1.0 - u) * layer->GetWidth() / 8.0);
+      value = 0.0; // the GPU gives this layer zero weight here
     }
-    if (!(e[2] <= -90.0 && e[3] >= 90.0))
+    switch (layer->GetBlendMode())
     {
-      w *= std::min(1.0, std::min(v, 1.0 - v) * layer->GetHeight() / 8.0);
+      case vtkGlobeLayer::Add:
+        h += w * value;
+        break;
+      case vtkGlobeLayer::Average:
+        sumW += w;
+        sumV += w * value;
+        if (i + 1 == order.size() || order[i + 1]->GetBlendMode() != vtkGlobeLayer::Average)
+        {
+          if (sumW > 0)
+          {
+            h += (sumV / sumW - h) * std::min(sumW, 1.0);
+          }
+          sumW = sumV = 0.0;
+        }
+        break;
+      default:
+        h += (value - h) * w;
     }
-    h += (value - h) * w;
   }
   return h;
 }
