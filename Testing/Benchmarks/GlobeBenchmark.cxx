@@ -42,6 +42,7 @@
 #include "vtk_glew.h" // glFinish, glGetString
 
 #include <algorithm>
+#include <utility>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -98,6 +99,7 @@ const Size AccuracyWindow = { 1024, 768 };
 struct Options
 {
   bool Quick = false;
+  bool EffectsOnly = false;
   int Frames = 30;
   int Warmup = 5;
   std::string Json = "benchmark.json";
@@ -393,6 +395,8 @@ private:
   void RunGlobe();
   void RunSphere();
   void RunMeshes();
+  void RunEffects();
+  void PrintEffects();
   double ProjectMesh(size_t firstRow, double otherSeconds, double previousTriangles,
     double triangles);
   void TimeCandidate(const std::string& method, Size resolution, double triangles, vtkProp* actor,
@@ -417,6 +421,7 @@ private:
   std::vector<vtkGlobeLayer*> Layers;
   vtkSmartPointer<vtkTexture> Imagery;
   std::vector<Row> Rows;
+  std::vector<std::pair<std::string, Row>> EffectRows; // whole Earth, grid 512^2, accuracy window
   std::vector<std::string> Notes; // what was cut short or skipped, and why
   std::vector<Comparison> Comparisons;
   std::string Renderer, Version, Vendor;
@@ -531,7 +536,7 @@ Row Benchmark::TimeConfiguration(const std::string& method, Size resolution, dou
   }
   row.Warmup = plan.Warmup;
 
-  vtkGlobeMapper* globe = method == "pgm" ? this->Scene.Mapper.Get() : nullptr;
+  vtkGlobeMapper* globe = method.compare(0, 3, "pgm") == 0 ? this->Scene.Mapper.Get() : nullptr;
   std::vector<double> times;
   std::vector<double> stages[NumberOfStages];
   for (int i = 0; i < plan.Frames; ++i)
@@ -1006,6 +1011,18 @@ bool Benchmark::WriteJson(double totalSeconds)
     }
     j << "}" << (i + 1 < this->Rows.size() ? ",\n" : "\n");
   }
+  j << "  ],\n  \"effects\": [\n";
+  for (size_t i = 0; i < this->EffectRows.size(); ++i)
+  {
+    const Row& r = this->EffectRows[i].second;
+    j << "    {\"effects\": " << JsonString(this->EffectRows[i].first)
+      << ", \"viewpoint\": \"earth\", \"window\": [" << r.Window.X << ", " << r.Window.Y
+      << "], \"grid\": 512, \"frames\": " << r.Time.Count
+      << ", \"frame_ms\": {\"median\": " << JsonNumber(r.Time.Median)
+      << ", \"q1\": " << JsonNumber(r.Time.Q1) << ", \"q3\": " << JsonNumber(r.Time.Q3)
+      << "}, \"composite_ms\": " << JsonNumber(r.Stages[CompositeStage]) << "}"
+      << (i + 1 < this->EffectRows.size() ? ",\n" : "\n");
+  }
   j << "  ],\n  \"comparisons\": [\n";
   for (size_t i = 0; i < this->Comparisons.size(); ++i)
   {
@@ -1037,14 +1054,80 @@ int Benchmark::Run()
   {
     this->Note("no GPU timer queries: the per-stage times are not available");
   }
-  this->RunGlobe();
-  this->RunSphere();
-  this->RunMeshes();
+  if (!this->Opt.EffectsOnly)
+  {
+    this->RunGlobe();
+    this->RunSphere();
+    this->RunMeshes();
+  }
+  this->RunEffects();
   const double total = SecondsSince(this->Start);
   this->PrintTable();
+  this->PrintEffects();
   this->Compare();
   std::printf("\nTotal run time: %.0f s (%.1f min)\n", total, total / 60.0);
   return this->WriteJson(total) ? 0 : 1;
+}
+
+/**
+ * The cost of each effect of the screen composition: the whole-Earth view in the accuracy
+ * window at grid 512^2, with lighting only (the default), each effect added alone, all of them,
+ * and unlit. The water mask and night lights are image layers derived from the relief; they are
+ * present in every configuration, but sampled only when their effect is on.
+ */
+void Benchmark::RunEffects()
+{
+  vtkGlobeMapper* mapper = this->Scene.Mapper;
+  vtkGlobeTest::AddWaterMaskAndNightLights(mapper, this->Layers.front());
+  mapper->SetGridResolution(512);
+  this->Scene.Renderer->AddActor(this->Scene.Actor);
+  struct Effect
+  {
+    const char* Name;
+    bool Lighting, Night, Water, Atmosphere, Graticule, Contours;
+  };
+  const Effect effects[] = { { "lighting", true, false, false, false, false, false },
+    { "+night lights", true, true, false, false, false, false },
+    { "+specular water", true, false, true, false, false, false },
+    { "+atmosphere", true, false, false, true, false, false },
+    { "+graticule", true, false, false, false, true, false },
+    { "+contours", true, false, false, false, false, true },
+    { "all", true, true, true, true, true, true },
+    { "unlit", false, false, false, false, false, false } };
+  for (const Effect& e : effects)
+  {
+    mapper->SetLighting(e.Lighting);
+    mapper->SetNightLights(e.Night);
+    mapper->SetSpecularWater(e.Water);
+    mapper->SetAtmosphere(e.Atmosphere);
+    mapper->SetGraticule(e.Graticule);
+    mapper->SetContours(e.Contours);
+    Row row = this->TimeConfiguration(
+      std::string("pgm ") + e.Name, { 512, 512 }, 2.0 * 511 * 511, EarthView, AccuracyWindow, false);
+    this->EffectRows.emplace_back(e.Name, row);
+  }
+  this->Scene.Renderer->RemoveViewProp(this->Scene.Actor);
+}
+
+void Benchmark::PrintEffects()
+{
+  if (this->EffectRows.empty())
+  {
+    return;
+  }
+  const Row& base = this->EffectRows.front().second;
+  std::printf("\nEffects: whole Earth, PGM 512^2, %s window. Frame: median wall ms; composite: "
+              "median GPU ms of the screen pass; extra: against lighting only.\n\n",
+    AccuracyWindow.ToString().c_str());
+  std::printf("%-16s %6s %9s %7s %10s %12s\n", "effects", "frames", "frame", "IQR", "composite",
+    "extra frame");
+  for (const auto& [name, row] : this->EffectRows)
+  {
+    std::printf("%-16s %6d %9s %7s %10s %12s\n", name.c_str(), row.Time.Count,
+      Format(row.Time.Median).c_str(), Format(row.Time.Q3 - row.Time.Q1).c_str(),
+      Format(row.Stages[CompositeStage]).c_str(),
+      Format(row.Time.Median - base.Time.Median, "%+.2f").c_str());
+  }
 }
 
 void Usage(const char* program)
@@ -1054,7 +1137,9 @@ void Usage(const char* program)
     "  Times the PGM globe (grids 256^2, 512^2, 1024^2) against a textured sphere and warped\n"
     "  lon/lat meshes (256x128 .. 4096x2048) at the whole-Earth and Rainier views in windows of\n"
     "  256^2, 512^2, 1024^2 and 1024x768, and measures their height error at the Rainier view.\n"
+    "  Then times each effect of the composition (whole Earth, 512^2, 1024x768).\n"
     "  --quick      fewer sizes and frames (a smoke run)\n"
+    "  --effects-only  only the effects section\n"
     "  --frames N   timed frames per configuration (default 30; the slowest meshes get fewer)\n"
     "  --json PATH  where to write the numbers (default benchmark.json)\n",
     program);
@@ -1071,6 +1156,10 @@ int main(int argc, char* argv[])
     if (arg == "--quick")
     {
       options.Quick = true;
+    }
+    else if (arg == "--effects-only")
+    {
+      options.EffectsOnly = true;
     }
     else if (arg == "--frames" && i + 1 < argc && std::atoi(argv[i + 1]) > 0)
     {

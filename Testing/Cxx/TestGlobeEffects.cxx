@@ -69,32 +69,6 @@ double QuadWidth(int x, int y, const std::function<double(int, int)>& value,
   return dx + dy;
 }
 
-// A mask (1 = water where the 2-degree relief is below sea level) and night lights (a
-// deterministic scatter of "cities" on low land), as in-memory image layers.
-void AddMaskAndLights(vtkGlobeTest::Scene& scene, vtkGlobeLayer* relief)
-{
-  relief->Update();
-  const int w = relief->GetWidth(), h = relief->GetHeight();
-  std::vector<unsigned char> mask, lights;
-  for (int i = 0; i < w * h; ++i)
-  {
-    const double z = relief->GetData()->GetComponent(i, 0);
-    const unsigned char water = z < 0.0 ? 255 : 0;
-    mask.insert(mask.end(), { water, water, water, 255 });
-    const bool city = z > 0.0 && z < 800.0 && ((i * 2654435761u) >> 28) < 6;
-    const unsigned char l = city ? 255 : 0;
-    lights.insert(lights.end(), { l, static_cast<unsigned char>(0.8 * l),
-      static_cast<unsigned char>(0.4 * l), 255 });
-  }
-  vtkNew<vtkGlobeLayer> maskLayer, lightLayer;
-  maskLayer->SetColorData(w, h, 4, mask.data(), -180, 180, -90, 90);
-  maskLayer->SetRoleToMask();
-  lightLayer->SetColorData(w, h, 4, lights.data(), -180, 180, -90, 90);
-  lightLayer->SetRoleToNightLights();
-  lightLayer->SetInterpolationToNearest();
-  scene.Mapper->AddLayer(maskLayer);
-  scene.Mapper->AddLayer(lightLayer);
-}
 } // namespace
 
 int TestGlobeEffects(int argc, char* argv[])
@@ -310,7 +284,7 @@ int TestGlobeEffects(int argc, char* argv[])
   scene.Mapper->ContoursOff();
 
   // Night lights and specular water need their layers; they appear once the layers do.
-  AddMaskAndLights(scene, scene.Mapper->GetLayer(0));
+  vtkGlobeTest::AddWaterMaskAndNightLights(scene.Mapper, scene.Mapper->GetLayer(0));
   scene.Mapper->NightLightsOff();
   scene.Mapper->SpecularWaterOff();
   scene.Render();

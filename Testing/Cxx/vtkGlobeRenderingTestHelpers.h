@@ -323,6 +323,35 @@ inline double ComposedHeight(const std::vector<vtkGlobeLayer*>& layers, double l
   return h;
 }
 
+/// Image layers derived from a global height layer, for the effects: a water mask (1 where the
+/// height is below 0) and night lights (a deterministic scatter of "cities" on low land).
+inline void AddWaterMaskAndNightLights(vtkGlobeMapper* mapper, vtkGlobeLayer* heights)
+{
+  heights->Update();
+  const int w = heights->GetWidth(), h = heights->GetHeight();
+  std::vector<unsigned char> mask, lights;
+  for (int i = 0; i < w * h; ++i)
+  {
+    const double z = heights->GetData()->GetComponent(i, 0);
+    const unsigned char water = z < 0.0 ? 255 : 0;
+    mask.insert(mask.end(), { water, water, water, 255 });
+    const bool city = z > 0.0 && z < 800.0 && ((i * 2654435761u) >> 28) < 6;
+    const unsigned char l = city ? 255 : 0;
+    lights.insert(lights.end(),
+      { l, static_cast<unsigned char>(0.8 * l), static_cast<unsigned char>(0.4 * l), 255 });
+  }
+  double e[4];
+  heights->GetGeographicExtent(e);
+  vtkNew<vtkGlobeLayer> maskLayer, lightLayer;
+  maskLayer->SetColorData(w, h, 4, mask.data(), e[0], e[1], e[2], e[3]);
+  maskLayer->SetRoleToMask();
+  lightLayer->SetColorData(w, h, 4, lights.data(), e[0], e[1], e[2], e[3]);
+  lightLayer->SetRoleToNightLights();
+  lightLayer->SetInterpolationToNearest();
+  mapper->AddLayer(maskLayer);
+  mapper->AddLayer(lightLayer);
+}
+
 /// The height layers of a mapper, in order.
 inline std::vector<vtkGlobeLayer*> HeightLayers(vtkGlobeMapper* mapper)
 {
