@@ -877,6 +877,19 @@ int vtkGlobeRasterReader::RequestInformation(
     return 0;
   }
   const std::string file = this->FileName;
+  // On failure, no stale output from an earlier success stays downstream.
+  struct ClearOnFailure
+  {
+    vtkInternals& In;
+    vtkImageData* Output;
+    ~ClearOnFailure()
+    {
+      if (this->In.File.empty() && this->Output)
+      {
+        this->Output->Initialize();
+      }
+    }
+  } clear{ in, vtkImageData::GetData(outputVector) };
   try
   {
     std::error_code ec;
