@@ -16,6 +16,7 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkTestErrorObserver.h"
+#include "vtkGlobeTestHelpers.h"
 
 #include <cmath>
 #include <cstdarg>
@@ -25,24 +26,14 @@
 
 namespace
 {
-int Failures = 0;
+vtkGlobeTest::Checklist Checks;
 
 void Expect(bool condition, const std::string& what)
 {
-  std::printf("  %-4s %s\n", condition ? "ok" : "FAIL", what.c_str());
-  Failures += condition ? 0 : 1;
+  Checks.Expect(condition, what);
 }
 
-std::string Format(const char* format, ...) __attribute__((format(printf, 1, 2)));
-std::string Format(const char* format, ...)
-{
-  char buffer[512];
-  va_list args;
-  va_start(args, format);
-  std::vsnprintf(buffer, sizeof(buffer), format, args);
-  va_end(args);
-  return buffer;
-}
+using vtkGlobeTest::Printf;
 
 const std::string Data = VTKGLOBE_DATA_DIR;
 
@@ -103,12 +94,12 @@ int TestGlobeLayerInput(int, char*[])
       layer->GetWidth() == 180 && layer->GetHeight() == 90 && extent[0] == plainExtent[0] &&
       extent[1] == plainExtent[1] && extent[2] == plainExtent[2] && extent[3] == plainExtent[3] &&
       layer->IsGlobal() && std::string(layer->GetName()) == "relief_2deg",
-    Format("the field data passed the filter: geographic EPSG %d, 180 x 90, extent %g %g %g %g, "
+    Printf("the field data passed the filter: geographic EPSG %d, 180 x 90, extent %g %g %g %g, "
            "global, name '%s'",
       layer->GetEPSG(), extent[0], extent[1], extent[2], extent[3], layer->GetName()));
   double worst = WorstShift(Values(layer), raw, 1000.0);
   Expect(worst == 0.0 && layer->GetMaximumValue() == plain->GetMaximumValue() + 1000.0,
-    Format("every post = file + 1000 m (worst difference %g m), row 0 north as with FileName; "
+    Printf("every post = file + 1000 m (worst difference %g m), row 0 north as with FileName; "
            "max %.1f m",
       worst, layer->GetMaximumValue()));
 
@@ -132,7 +123,7 @@ int TestGlobeLayerInput(int, char*[])
   other->Update();
   worst = WorstShift(Values(layer), raw, -500.0);
   Expect(layer->GetNumberOfLoads() == 2 && worst == 0.0 && layer->GetData()->GetMTime() > time,
-    Format("SetShift(-500): re-loaded (%d loads), every post = file - 500 m (worst %g), newer "
+    Printf("SetShift(-500): re-loaded (%d loads), every post = file - 500 m (worst %g), newer "
            "data MTime",
       layer->GetNumberOfLoads(), worst));
   time = layer->GetData()->GetMTime();
@@ -142,7 +133,7 @@ int TestGlobeLayerInput(int, char*[])
   other->Update();
   Expect(layer->GetNumberOfLoads() == 3 && layer->GetData()->GetMTime() > time &&
       other->GetNumberOfLoads() == 1 && other->GetData()->GetMTime() == otherTime,
-    Format("reader->Modified(): this layer re-loads (%d loads, newer data), the unrelated one "
+    Printf("reader->Modified(): this layer re-loads (%d loads, newer data), the unrelated one "
            "does not (%d load, same data)",
       layer->GetNumberOfLoads(), other->GetNumberOfLoads()));
 
@@ -170,7 +161,7 @@ int TestGlobeLayerInput(int, char*[])
     const bool ok = smoothed->Update();
     Expect(ok && !errors->GetError() && smoothed->GetMaximumValue() < plain->GetMaximumValue() &&
         smoothed->GetMinimumValue() > plain->GetMinimumValue(),
-      Format("vtkImageGaussianSmooth: the range shrinks to %.1f .. %.1f m (file %.1f .. %.1f)",
+      Printf("vtkImageGaussianSmooth: the range shrinks to %.1f .. %.1f m (file %.1f .. %.1f)",
         smoothed->GetMinimumValue(), smoothed->GetMaximumValue(), plain->GetMinimumValue(),
         plain->GetMaximumValue()));
 
@@ -194,7 +185,7 @@ int TestGlobeLayerInput(int, char*[])
     }
     Expect(cropOk && !errors->GetError() && extent[0] == 0 && extent[1] == 180 &&
         extent[2] == 0 && extent[3] == 90 && same,
-      Format("vtkExtractVOI (north-east quarter): extent %g %g %g %g, the posts of the file's "
+      Printf("vtkExtractVOI (north-east quarter): extent %g %g %g %g, the posts of the file's "
              "quarter",
         extent[0], extent[1], extent[2], extent[3]));
   }
@@ -253,6 +244,5 @@ int TestGlobeLayerInput(int, char*[])
     errors->Clear();
   }
 
-  std::printf("%d failure(s)\n", Failures);
-  return Failures == 0 ? 0 : 1;
+  return Checks.Result();
 }

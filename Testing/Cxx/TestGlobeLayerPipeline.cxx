@@ -7,16 +7,16 @@
 #include "vtkGlobeLayerSet.h"
 #include "vtkGlobeRasterReader.h"
 #include "vtkGlobeRenderingTestHelpers.h"
+#include "vtkGlobeTestHelpers.h"
 #include "vtkImageShiftScale.h"
 
 namespace
 {
-int Failures = 0;
+vtkGlobeTest::Checklist Checks;
 
 void Expect(bool condition, const std::string& what)
 {
-  std::printf("  %-4s %s\n", condition ? "ok" : "FAIL", what.c_str());
-  Failures += condition ? 0 : 1;
+  Checks.Expect(condition, what);
 }
 
 /// Mean geodetic height (m) of the depth-reconstructed points of every 4th covered pixel.
@@ -111,6 +111,5 @@ int TestGlobeLayerPipeline(int, char*[])
       heights->GetNumberOfLoads() == 2,
     "colorReader->Modified(): the colour layer alone re-loaded and re-uploaded");
 
-  std::printf("%d failure(s)\n", Failures);
-  return Failures == 0 ? 0 : 1;
+  return Checks.Result();
 }

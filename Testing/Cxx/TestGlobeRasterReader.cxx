@@ -19,6 +19,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 #include "vtkTestErrorObserver.h"
+#include "vtkGlobeTestHelpers.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -33,24 +34,14 @@
 
 namespace
 {
-int Failures = 0;
+vtkGlobeTest::Checklist Checks;
 
 void Expect(bool condition, const std::string& what)
 {
-  std::printf("  %-4s %s\n", condition ? "ok" : "FAIL", what.c_str());
-  Failures += condition ? 0 : 1;
+  Checks.Expect(condition, what);
 }
 
-std::string Format(const char* format, ...) __attribute__((format(printf, 1, 2)));
-std::string Format(const char* format, ...)
-{
-  char buffer[768];
-  va_list args;
-  va_start(args, format);
-  std::vsnprintf(buffer, sizeof(buffer), format, args);
-  va_end(args);
-  return buffer;
-}
+using vtkGlobeTest::Printf;
 
 const std::string Data = VTKGLOBE_DATA_DIR;
 const std::string Temp = VTKGLOBE_TEMP_DIR;
@@ -162,7 +153,7 @@ long CompareWithOIIO(const std::string& file, vtkImageData* image, std::string& 
   {
     mismatches += std::memcmp(out + row * j, reference.data() + row * (spec.height - 1 - j), row) != 0;
   }
-  note = Format("%d x %d x %d %s", spec.width, spec.height, spec.nchannels, type.c_str());
+  note = Printf("%d x %d x %d %s", spec.width, spec.height, spec.nchannels, type.c_str());
   return mismatches;
 }
 
@@ -214,14 +205,14 @@ int TestGlobeRasterReader(int, char*[])
     const double step = 1.0 / 1200.0;
     Expect(extent[0] == 0 && extent[1] == 1200 && extent[2] == 0 && extent[3] == 1200 &&
         extent[4] == 0 && extent[5] == 0,
-      Format("mt_rainier_90m.tif WHOLE_EXTENT 0..%d x 0..%d", extent[1], extent[3]));
+      Printf("mt_rainier_90m.tif WHOLE_EXTENT 0..%d x 0..%d", extent[1], extent[3]));
     Expect(Near(spacing[0], step, 1e-15) && Near(spacing[1], step, 1e-15),
-      Format("SPACING %.15g x %.15g degrees (1/1200)", spacing[0], spacing[1]));
+      Printf("SPACING %.15g x %.15g degrees (1/1200)", spacing[0], spacing[1]));
     // The origin is the centre of the south-west pixel: west + 1/2 pixel, north - 1201 + 1/2.
     const double west = -122.0 - 0.5 * step, north = 47.0 + 0.5 * step;
     Expect(Near(origin[0], west + 0.5 * step, 1e-12) &&
         Near(origin[1], north - 1201 * step + 0.5 * step, 1e-12),
-      Format("ORIGIN (%.12f, %.12f): the centre of the south-west pixel", origin[0], origin[1]));
+      Printf("ORIGIN (%.12f, %.12f): the centre of the south-west pixel", origin[0], origin[1]));
     Expect(scalarInfo && scalarInfo->Get(vtkDataObject::FIELD_ARRAY_TYPE()) == VTK_SHORT &&
         scalarInfo->Get(vtkDataObject::FIELD_NUMBER_OF_COMPONENTS()) == 1,
       "scalar type short (int16, native), 1 component");
@@ -283,7 +274,7 @@ int TestGlobeRasterReader(int, char*[])
     std::string note;
     const long mismatches = CompareWithOIIO(file, image, note);
     Expect(!errors->GetError() && mismatches == 0,
-      Format("%s: %s, every row equal to OpenImageIO's (flipped: row 0 south), %ld rows differ",
+      Printf("%s: %s, every row equal to OpenImageIO's (flipped: row 0 south), %ld rows differ",
         e.File, note.c_str(), mismatches));
     const double t[4] = { FieldNumber(image, "GlobeGeoTransform", 0),
       FieldNumber(image, "GlobeGeoTransform", 1), FieldNumber(image, "GlobeGeoTransform", 2),
@@ -295,17 +286,17 @@ int TestGlobeRasterReader(int, char*[])
         FieldNumber(image, "GlobeEPSG") == e.EPSG && Near(t[0], e.Corner[0], e.Tolerance) &&
         Near(t[1], e.Corner[1], e.Tolerance) && Near(t[2], e.Pixel[0], pixelTolerance) &&
         Near(t[3], py, pixelTolerance) && FieldText(image, "GlobeUnits") == e.Units,
-      Format("    model %g, EPSG %g, NW corner (%.9f, %.9f), pixel %.12g x %.12g %s", FieldNumber(image, "GlobeModelType"),
+      Printf("    model %g, EPSG %g, NW corner (%.9f, %.9f), pixel %.12g x %.12g %s", FieldNumber(image, "GlobeModelType"),
         FieldNumber(image, "GlobeEPSG"), t[0], t[1], t[2], t[3],
         FieldText(image, "GlobeUnits").c_str()));
     const bool hasNoData = image->GetFieldData()->GetArray("GlobeNoDataValue") != nullptr;
     Expect(hasNoData == e.HasNoData && (!e.HasNoData || FieldNumber(image, "GlobeNoDataValue") == e.NoData),
-      Format("    nodata %s", hasNoData ? std::to_string(FieldNumber(image, "GlobeNoDataValue")).c_str() : "none"));
+      Printf("    nodata %s", hasNoData ? std::to_string(FieldNumber(image, "GlobeNoDataValue")).c_str() : "none"));
     const bool hasDatum = image->GetFieldData()->GetArray("GlobeDatumSemiAxes") != nullptr;
     Expect(hasDatum == (e.SemiMajor > 0) &&
         (!hasDatum || (FieldNumber(image, "GlobeDatumSemiAxes", 0) == e.SemiMajor &&
                         Near(FieldNumber(image, "GlobeDatumSemiAxes", 1), e.SemiMinor, 1e-6))),
-      hasDatum ? Format("    datum semi-axes %.6f, %.6f m", FieldNumber(image, "GlobeDatumSemiAxes", 0),
+      hasDatum ? Printf("    datum semi-axes %.6f, %.6f m", FieldNumber(image, "GlobeDatumSemiAxes", 0),
                    FieldNumber(image, "GlobeDatumSemiAxes", 1))
                : std::string("    no datum semi-axes (not spelled out in the file)"));
     // The image's own geometry says the same: origin = corner + half a pixel, y up.
@@ -325,7 +316,7 @@ int TestGlobeRasterReader(int, char*[])
         FieldNumber(image, "GlobeGeographicExtent", 3) };
       Expect(box[0] == t[0] && Near(box[1], t[0] + dims[0] * t[2], 1e-9) &&
           Near(box[2], t[1] - dims[1] * t[3], 1e-9) && box[3] == t[1],
-        Format("    geographic extent W %.9f E %.9f S %.9f N %.9f", box[0], box[1], box[2], box[3]));
+        Printf("    geographic extent W %.9f E %.9f S %.9f N %.9f", box[0], box[1], box[2], box[3]));
     }
     else
     {
@@ -356,7 +347,7 @@ int TestGlobeRasterReader(int, char*[])
     const long mismatches = CompareWithOIIO(png, image, note);
     Expect(!errors->GetError() && mismatches == 0 &&
         image->GetPointData()->GetScalars()->GetComponent(0, 0) == 70,
-      Format("PNG pixels equal OpenImageIO's, row 0 south (red of (0, 0) = file row 7 = %g)",
+      Printf("PNG pixels equal OpenImageIO's, row 0 south (red of (0, 0) = file row 7 = %g)",
         image->GetPointData()->GetScalars()->GetComponent(0, 0)));
     Expect(FieldNumber(image, "GlobeModelType") == 2 && FieldNumber(image, "GlobeEPSG") == 32610 &&
         FieldNumber(image, "GlobeGeoTransform", 0) == 500000 &&
@@ -365,7 +356,7 @@ int TestGlobeRasterReader(int, char*[])
         FieldNumber(image, "GlobeGeoTransform", 3) == 30 &&
         FieldText(image, "GlobeUnits") == "metre" &&
         FieldText(image, "GlobeGeoreferenceSource") == "world file + .prj",
-      Format(".pgw + .prj: projected EPSG %g, NW corner (%.2f, %.2f) (centre 500015, 5200005 "
+      Printf(".pgw + .prj: projected EPSG %g, NW corner (%.2f, %.2f) (centre 500015, 5200005 "
              "minus half a pixel), 30 m pixels, %s, from '%s'",
         FieldNumber(image, "GlobeEPSG"), FieldNumber(image, "GlobeGeoTransform", 0),
         FieldNumber(image, "GlobeGeoTransform", 1), FieldText(image, "GlobeUnits").c_str(),
@@ -385,7 +376,7 @@ int TestGlobeRasterReader(int, char*[])
         FieldNumber(image, "GlobeGeographicExtent", 3) == 50 &&
         image->GetPointData()->GetScalars()->GetComponent(0, 0) == 70 &&
         image->GetPointData()->GetScalars()->GetDataType() == VTK_FLOAT,
-      Format(".tfw alone, numbers in degrees: geographic WGS 84 assumed ('%s'), box 10..14 E, "
+      Printf(".tfw alone, numbers in degrees: geographic WGS 84 assumed ('%s'), box 10..14 E, "
              "48..50 N, float values, (0, 0) = %g",
         FieldText(image, "GlobeGeoreferenceSource").c_str(),
         image->GetPointData()->GetScalars()->GetComponent(0, 0)));
@@ -400,7 +391,7 @@ int TestGlobeRasterReader(int, char*[])
         FieldNumber(image, "GlobeEPSG") == 3413 &&
         FieldNumber(image, "GlobeGeoTransform", 0) == -4000000 &&
         FieldText(image, "GlobeUnits") == "metre",
-      Format(".tfw in metres + SetEPSG(3413): projected EPSG %g, '%s', units %s",
+      Printf(".tfw in metres + SetEPSG(3413): projected EPSG %g, '%s', units %s",
         FieldNumber(image, "GlobeEPSG"), FieldText(image, "GlobeGeoreferenceSource").c_str(),
         FieldText(image, "GlobeUnits").c_str()));
     reader->SetEPSG(0);
@@ -441,12 +432,12 @@ int TestGlobeRasterReader(int, char*[])
     std::string list;
     for (double x : v)
     {
-      list += Format(" %.3f", x);
+      list += Printf(" %.3f", x);
     }
     // Chunks are about a twentieth of the rows, rounded up to whole rows of tiles (this file
     // has 256-row tiles: 5 chunks).
     Expect(increasing && between >= 4 && v.back() == 1.0,
-      Format("%s: %zu ProgressEvents, %d strictly between 0 and 1, non-decreasing, last 1:%s",
+      Printf("%s: %zu ProgressEvents, %d strictly between 0 and 1, non-decreasing, last 1:%s",
         name, v.size(), between, list.c_str()));
   }
 
@@ -555,6 +546,5 @@ int TestGlobeRasterReader(int, char*[])
       "a failure after a success leaves no stale points");
   }
 
-  std::printf("%d failure(s)\n", Failures);
-  return Failures == 0 ? 0 : 1;
+  return Checks.Result();
 }
