@@ -1,29 +1,32 @@
 #include "vtkGlobeLayer.h"
 
+#include "vtkAlgorithmOutput.h"
+#include "vtkCallbackCommand.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
+#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
+#include "vtkGlobeRasterReader.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointData.h"
 #include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
 #include "vtkUnsignedCharArray.h"
 
-#include <OpenImageIO/imageio.h>
-
-#include <geotiff.h>
-#include <geovalues.h>
-#include <tiffio.h>
-#include <xtiffio.h>
-
 #include <algorithm>
-#include <cctype>
-#include <charconv>
 #include <cmath>
-#include <cstdarg>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <limits>
-#include <mutex>
 #include <new>
 #include <string>
 #include <type_traits>
@@ -35,354 +38,6 @@ namespace
 {
 constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
 constexpr float NaNf = std::numeric_limits<float>::quiet_NaN();
-
-// GDAL writes the nodata value as ASCII in this private tag; libtiff does not know it.
-constexpr ttag_t GDALNoDataTag = 42113;
-
-//------------------------------------------------------------------------------------------
-// libtiff set-up: the GeoTIFF tags (XTIFFInitialize) and GDAL_NODATA are registered through
-// tag extenders, which libtiff keeps globally; install them once, chained to any previous one.
-TIFFExtendProc PreviousExtender = nullptr;
-
-void GDALTagExtender(TIFF* tif)
-{
-  static const TIFFFieldInfo info[] = { { GDALNoDataTag, -1, -1, TIFF_ASCII, FIELD_CUSTOM, 1, 0,
-    const_cast<char*>("GDAL_NODATA") } };
-  TIFFMergeFieldInfo(tif, info, 1);
-  if (PreviousExtender)
-  {
-    PreviousExtender(tif);
-  }
-}
-
-void RegisterTIFFTags()
-{
-  static std::once_flag once;
-  std::call_once(once,
-    []
-    {
-      XTIFFInitialize();
-      PreviousExtender = TIFFSetTagExtender(GDALTagExtender);
-    });
-}
-
-#if defined(TIFFLIB_VERSION) && TIFFLIB_VERSION >= 20221213
-// libtiff >= 4.5: per-handle handlers, so messages reach our error text instead of stderr.
-int CollectTIFFError(TIFF*, void* userData, const char*, const char* format, va_list args)
-{
-  char buffer[512];
-  std::vsnprintf(buffer, sizeof(buffer), format, args);
-  auto* text = static_cast<std::string*>(userData);
-  if (text->empty())
-  {
-    *text = buffer; // the first error is the cause; later ones are consequences
-  }
-  return 1;
-}
-
-int IgnoreTIFFWarning(TIFF*, void*, const char*, const char*, va_list)
-{
-  return 1; // e.g. GDAL_METADATA (42112), unknown to libtiff and of no use here
-}
-
-TIFF* OpenTIFF(const std::string& fileName, std::string* errorText)
-{
-  TIFFOpenOptions* options = TIFFOpenOptionsAlloc();
-  TIFFOpenOptionsSetErrorHandlerExtR(options, CollectTIFFError, errorText);
-  TIFFOpenOptionsSetWarningHandlerExtR(options, IgnoreTIFFWarning, nullptr);
-  TIFF* tif = TIFFOpenExt(fileName.c_str(), "r", options);
-  TIFFOpenOptionsFree(options);
-  return tif;
-}
-#else
-TIFF* OpenTIFF(const std::string& fileName, std::string*)
-{
-  return TIFFOpen(fileName.c_str(), "r");
-}
-#endif
-
-/// Parses GDAL's nodata text ("-32768", "nan", "-3.4028234663852886e+38"), locale-free.
-bool ParseNoData(const char* text, double& value)
-{
-  std::string s(text);
-  const auto notSpace = [](unsigned char c) { return !std::isspace(c); };
-  s.erase(s.begin(), std::find_if(s.begin(), s.end(), notSpace));
-  s.erase(std::find_if(s.rbegin(), s.rend(), notSpace).base(), s.end());
-  if (!s.empty() && s[0] == '+')
-  {
-    s.erase(0, 1);
-  }
-  const auto result = std::from_chars(s.data(), s.data() + s.size(), value);
-  return !s.empty() && result.ec == std::errc() && result.ptr == s.data() + s.size();
-}
-
-/// Degrees per unit of a GeogAngularUnitsGeoKey code; 0 when unsupported.
-double DegreesPerAngularUnit(int code)
-{
-  switch (code)
-  {
-    case Angular_Radian:
-      return 180.0 / 3.14159265358979323846;
-    case Angular_Degree:
-      return 1.0;
-    case Angular_Arc_Minute:
-      return 1.0 / 60.0;
-    case Angular_Arc_Second:
-      return 1.0 / 3600.0;
-    case Angular_Grad:
-    case Angular_Gon:
-      return 0.9;
-    default:
-      return 0.0;
-  }
-}
-
-/// What libgeotiff tells about a file.
-struct GeoInfo
-{
-  int ModelType = 0; // vtkGlobeLayer::ModelTypes
-  int EPSG = 0;
-  bool PixelIsPoint = false;
-  // GDAL-style affine transform: x = t0 + col t1 + row t2, y = t3 + col t4 + row t5, in the
-  // model's units (degrees after conversion for Geographic), for the outer pixel corner.
-  double T[6] = { 0, 0, 0, 0, 0, 0 };
-  double SemiMajor = 0.0;
-  double SemiMinor = 0.0;
-  bool HasNoData = false;
-  double NoData = 0.0;
-  bool NoDataUnparsed = false;
-  int Width = 0;
-  int Height = 0;
-};
-
-/// Reads the georeferencing and the nodata tag. False with the reason in `why`.
-bool ReadGeoTIFF(const std::string& fileName, GeoInfo& info, std::string& why)
-{
-  RegisterTIFFTags();
-  std::string tiffError;
-  TIFF* tif = OpenTIFF(fileName, &tiffError);
-  if (!tif)
-  {
-    why = "it is not a TIFF file, so it has no GeoTIFF georeferencing";
-    if (!tiffError.empty())
-    {
-      why += " (libtiff: " + tiffError + ")";
-    }
-    return false;
-  }
-  // Closes the handles on every return path.
-  struct Closer
-  {
-    TIFF* Tif;
-    GTIF* Gtif = nullptr;
-    ~Closer()
-    {
-      if (this->Gtif)
-      {
-        GTIFFree(this->Gtif);
-      }
-      XTIFFClose(this->Tif);
-    }
-  } closer{ tif };
-
-  uint32_t w = 0, h = 0;
-  TIFFGetField(tif, TIFFTAG_IMAGEWIDTH, &w);
-  TIFFGetField(tif, TIFFTAG_IMAGELENGTH, &h);
-  info.Width = static_cast<int>(std::min<uint32_t>(w, std::numeric_limits<int>::max()));
-  info.Height = static_cast<int>(std::min<uint32_t>(h, std::numeric_limits<int>::max()));
-
-  char* noDataText = nullptr;
-  if (TIFFGetField(tif, GDALNoDataTag, &noDataText) && noDataText)
-  {
-    info.HasNoData = ParseNoData(noDataText, info.NoData);
-    info.NoDataUnparsed = !info.HasNoData;
-  }
-
-  // The raster -> model transform, from the tie point and pixel scale or from the matrix.
-  uint16_t count = 0;
-  double* values = nullptr;
-  double* tie = nullptr;
-  uint16_t tieCount = 0;
-  if (TIFFGetField(tif, TIFFTAG_GEOTIEPOINTS, &tieCount, &values) && tieCount >= 6)
-  {
-    tie = values;
-  }
-  double* scale = nullptr;
-  if (TIFFGetField(tif, TIFFTAG_GEOPIXELSCALE, &count, &values) && count >= 2)
-  {
-    scale = values;
-  }
-  double* matrix = nullptr;
-  if (TIFFGetField(tif, TIFFTAG_GEOTRANSMATRIX, &count, &values) && count >= 16)
-  {
-    matrix = values;
-  }
-  double* t = info.T;
-  if (tie && scale)
-  {
-    t[0] = tie[3] - tie[0] * scale[0];
-    t[1] = scale[0];
-    t[2] = 0.0;
-    t[3] = tie[4] + tie[1] * scale[1];
-    t[4] = 0.0;
-    t[5] = -scale[1];
-  }
-  else if (matrix)
-  {
-    t[0] = matrix[3];
-    t[1] = matrix[0];
-    t[2] = matrix[1];
-    t[3] = matrix[7];
-    t[4] = matrix[4];
-    t[5] = matrix[5];
-  }
-  else if (tie)
-  {
-    why = "its GeoTIFF georeferencing is ground control points only (no ModelPixelScale or "
-          "ModelTransformation tag), which is not supported";
-    return false;
-  }
-  else
-  {
-    why = "it has no GeoTIFF georeferencing (no ModelTiepoint + ModelPixelScale or "
-          "ModelTransformation tag)";
-    return false;
-  }
-
-  closer.Gtif = GTIFNew(tif);
-  GTIF* gtif = closer.Gtif;
-  if (!gtif)
-  {
-    why = "its GeoTIFF keys cannot be read";
-    return false;
-  }
-  unsigned short code = 0;
-  if (GTIFKeyGet(gtif, GTModelTypeGeoKey, &code, 0, 1) != 1)
-  {
-    why = "it has no GTModelTypeGeoKey, so it is not known whether it is geographic or "
-          "projected";
-    return false;
-  }
-  if (code == ModelTypeGeographic)
-  {
-    info.ModelType = vtkGlobeLayer::Geographic;
-  }
-  else if (code == ModelTypeProjected)
-  {
-    info.ModelType = vtkGlobeLayer::Projected;
-  }
-  else
-  {
-    why = "its model type (GTModelTypeGeoKey = " + std::to_string(code) +
-      ") is neither geographic nor projected";
-    return false;
-  }
-  if (GTIFKeyGet(gtif, GTRasterTypeGeoKey, &code, 0, 1) == 1)
-  {
-    info.PixelIsPoint = (code == RasterPixelIsPoint);
-  }
-  const geokey_t epsgKey =
-    info.ModelType == vtkGlobeLayer::Geographic ? GeographicTypeGeoKey : ProjectedCSTypeGeoKey;
-  if (GTIFKeyGet(gtif, epsgKey, &code, 0, 1) == 1 && code != KvUserDefined)
-  {
-    info.EPSG = code;
-  }
-
-  // The datum's ellipsoid, only when the file spells it out (a user-defined body).
-  double a = 0.0, b = 0.0, inverseFlattening = 0.0;
-  if (GTIFKeyGet(gtif, GeogSemiMajorAxisGeoKey, &a, 0, 1) == 1 && a > 0.0)
-  {
-    info.SemiMajor = a;
-    if (GTIFKeyGet(gtif, GeogSemiMinorAxisGeoKey, &b, 0, 1) == 1 && b > 0.0)
-    {
-      info.SemiMinor = b;
-    }
-    else if (GTIFKeyGet(gtif, GeogInvFlatteningGeoKey, &inverseFlattening, 0, 1) == 1)
-    {
-      // An inverse flattening of 0 denotes a sphere.
-      info.SemiMinor = inverseFlattening != 0.0 ? a * (1.0 - 1.0 / inverseFlattening) : a;
-    }
-  }
-
-  if (info.ModelType == vtkGlobeLayer::Geographic)
-  {
-    // Geographic coordinates are in GeogAngularUnits (degrees unless said otherwise).
-    double degrees = 1.0;
-    double unitSize = 0.0; // radians per unit
-    const bool hasSize = GTIFKeyGet(gtif, GeogAngularUnitSizeGeoKey, &unitSize, 0, 1) == 1;
-    if (GTIFKeyGet(gtif, GeogAngularUnitsGeoKey, &code, 0, 1) == 1 && code != KvUserDefined)
-    {
-      degrees = DegreesPerAngularUnit(code);
-      if (degrees == 0.0)
-      {
-        why = "its angular unit (GeogAngularUnitsGeoKey = " + std::to_string(code) +
-          ") is not supported";
-        return false;
-      }
-    }
-    else if (hasSize && unitSize > 0.0)
-    {
-      degrees = unitSize * 180.0 / 3.14159265358979323846;
-    }
-    for (double& v : info.T)
-    {
-      v *= degrees;
-    }
-  }
-  if (info.PixelIsPoint)
-  {
-    // The transform is for pixel centres: move it to the outer pixel corner.
-    t[0] -= 0.5 * (t[1] + t[2]);
-    t[3] -= 0.5 * (t[4] + t[5]);
-  }
-  for (double v : info.T)
-  {
-    if (!std::isfinite(v))
-    {
-      why = "its GeoTIFF transform is not finite";
-      return false;
-    }
-  }
-  if (t[2] != 0.0 || t[4] != 0.0)
-  {
-    why = "it is rotated or sheared (ModelTransformation with off-diagonal terms), which is "
-          "not supported";
-    return false;
-  }
-  if (t[1] == 0.0 || t[5] == 0.0)
-  {
-    why = "its pixel size is zero";
-    return false;
-  }
-  return true;
-}
-
-/// Reverses the row order (south-up -> north-up) of a row-major raster.
-template <typename T>
-void FlipRows(std::vector<T>& v, int width, int height, int components)
-{
-  const size_t row = static_cast<size_t>(width) * components;
-  for (int r = 0; r < height / 2; ++r)
-  {
-    std::swap_ranges(
-      v.begin() + r * row, v.begin() + (r + 1) * row, v.begin() + (height - 1 - r) * row);
-  }
-}
-
-/// Reverses the column order (east-to-west storage) of a row-major raster.
-template <typename T>
-void FlipColumns(std::vector<T>& v, int width, int height, int components)
-{
-  for (int r = 0; r < height; ++r)
-  {
-    for (int c = 0; c < width / 2; ++c)
-    {
-      const size_t a = (static_cast<size_t>(r) * width + c) * components;
-      const size_t b = (static_cast<size_t>(r) * width + (width - 1 - c)) * components;
-      std::swap_ranges(v.begin() + a, v.begin() + a + components, v.begin() + b);
-    }
-  }
-}
 
 /// The nodata value in a raster's sample type, when it is one of its values.
 template <typename T>
@@ -422,19 +77,25 @@ bool NoDataAs(double noData, T& value)
   }
 }
 
-/// Converts native samples to float, turning nodata samples into NaN (the void marker).
+
+/// Converts native samples (VTK rows, row 0 south) to float rows north first, turning nodata
+/// samples into NaN (the void marker).
 template <typename T>
-void SamplesToFloat(const std::vector<unsigned char>& bytes, size_t n, bool hasNoData,
-  double noData, std::vector<float>& out)
+void SamplesToFloat(const T* raw, int width, int height, bool hasNoData, double noData,
+  std::vector<float>& out)
 {
-  const T* raw = reinterpret_cast<const T*>(bytes.data());
   // Compare in the raster's own type: the nodata text may round (e.g. float -3.4e38).
   T nd{};
   const bool useNoData = hasNoData && NoDataAs(noData, nd);
-  out.resize(n);
-  for (size_t i = 0; i < n; ++i)
+  out.resize(static_cast<size_t>(width) * height);
+  for (int r = 0; r < height; ++r)
   {
-    out[i] = (useNoData && raw[i] == nd) ? NaNf : static_cast<float>(raw[i]);
+    const T* row = raw + static_cast<size_t>(height - 1 - r) * width;
+    float* dst = out.data() + static_cast<size_t>(r) * width;
+    for (int c = 0; c < width; ++c)
+    {
+      dst[c] = (useNoData && row[c] == nd) ? NaNf : static_cast<float>(row[c]);
+    }
   }
 }
 
@@ -585,22 +246,181 @@ bool SameDouble(double a, double b)
 {
   return a == b || (std::isnan(a) && std::isnan(b));
 }
+
+/// The common end of loading heights: scale/offset, voids, range, fill. `values` holds raw
+/// values with NaN for voids. Returns false (with `why`) when no post is valid.
+bool FinishHeights(std::vector<float>& values, int width, int height, double scale, double offset,
+  bool fill, vtkIdType& voids, double& minimum, double& maximum, std::string& why,
+  vtkSmartPointer<vtkDataArray>& data)
+{
+  voids = 0;
+  minimum = std::numeric_limits<double>::infinity();
+  maximum = -minimum;
+  for (float& v : values)
+  {
+    if (!std::isfinite(v))
+    {
+      v = NaNf; // +-Inf are voids too
+      ++voids;
+      continue;
+    }
+    v = static_cast<float>(v * scale + offset);
+    minimum = std::min(minimum, static_cast<double>(v));
+    maximum = std::max(maximum, static_cast<double>(v));
+  }
+  if (voids == static_cast<vtkIdType>(values.size()))
+  {
+    why = "it has no valid height: all " + std::to_string(voids) + " posts are nodata or NaN";
+    return false;
+  }
+  if (fill && voids > 0)
+  {
+    PushPullFill(values, width, height);
+  }
+  vtkNew<vtkFloatArray> array;
+  array->SetName("Height");
+  array->SetNumberOfComponents(1);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+  std::copy(values.begin(), values.end(), array->GetPointer(0));
+  data = array;
+  return true;
+}
+
+/// The common end of loading colour: RGB(A) -> RGBA, nodata pixels transparent.
+void FinishColors(const std::vector<unsigned char>& pixels, size_t n, int components,
+  bool hasNoData, double noData, vtkIdType& voids, vtkSmartPointer<vtkDataArray>& data)
+{
+  vtkNew<vtkUnsignedCharArray> array;
+  array->SetName("Color");
+  array->SetNumberOfComponents(4);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(n));
+  unsigned char* out = array->GetPointer(0);
+  // Nodata applies only when it is a possible 8-bit value.
+  const bool useNoData =
+    hasNoData && noData >= 0.0 && noData <= 255.0 && noData == std::floor(noData);
+  const unsigned char nd = useNoData ? static_cast<unsigned char>(noData) : 0;
+  voids = 0;
+  for (size_t i = 0; i < n; ++i)
+  {
+    const unsigned char* p = pixels.data() + i * components;
+    out[4 * i + 0] = p[0];
+    out[4 * i + 1] = p[1];
+    out[4 * i + 2] = p[2];
+    out[4 * i + 3] = components == 4 ? p[3] : 255;
+    // As GDAL's per-dataset nodata mask: a pixel is missing when all its bands are nodata.
+    if (useNoData && p[0] == nd && p[1] == nd && p[2] == nd)
+    {
+      out[4 * i + 3] = 0;
+      ++voids;
+    }
+  }
+  data = array;
+}
+
+bool CheckMemoryInput(int width, int height, const void* values, std::string& why)
+{
+  if (width <= 0 || height <= 0)
+  {
+    why =
+      "the size (" + std::to_string(width) + " x " + std::to_string(height) + ") must be positive";
+    return false;
+  }
+  if (!values)
+  {
+    why = "no values were given";
+    return false;
+  }
+  return true;
+}
+
+/// A number from a field-data array of the reader; false when the array is missing.
+bool FieldValue(vtkFieldData* fd, const char* name, int component, double& value)
+{
+  vtkDataArray* a = fd ? fd->GetArray(name) : nullptr;
+  if (!a || a->GetNumberOfValues() <= component)
+  {
+    return false;
+  }
+  value = a->GetVariantValue(component).ToDouble();
+  return true;
+}
+
+std::string FieldString(vtkFieldData* fd, const char* name)
+{
+  vtkStringArray* a = fd ? vtkStringArray::SafeDownCast(fd->GetAbstractArray(name)) : nullptr;
+  return a && a->GetNumberOfValues() > 0 ? a->GetValue(0) : std::string();
+}
+
+/**
+ * The layer's end of the pipeline: one vtkImageData input port, no output port (a sink, as a
+ * writer). Its update brings the input up to date; the layer then reads the input's data.
+ */
+class vtkGlobeLayerInput : public vtkAlgorithm
+{
+public:
+  static vtkGlobeLayerInput* New();
+  vtkTypeMacro(vtkGlobeLayerInput, vtkAlgorithm);
+
+  vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override
+  {
+    if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT()))
+    {
+      // The whole raster.
+      vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+      if (inInfo && inInfo->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+      {
+        inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
+          inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
+      }
+      return 1;
+    }
+    return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+  }
+
+protected:
+  vtkGlobeLayerInput()
+  {
+    this->SetNumberOfInputPorts(1);
+    this->SetNumberOfOutputPorts(0);
+  }
+  int FillInputPortInformation(int, vtkInformation* info) override
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+    return 1;
+  }
+
+private:
+  vtkGlobeLayerInput(const vtkGlobeLayerInput&) = delete;
+  void operator=(const vtkGlobeLayerInput&) = delete;
+};
+vtkStandardNewMacro(vtkGlobeLayerInput);
 } // namespace
 
 //------------------------------------------------------------------------------------------
 class vtkGlobeLayer::vtkInternals
 {
 public:
+  enum Sources
+  {
+    None,
+    File,   // FileName, through Reader
+    Memory, // SetHeightData / SetColorData
+    Input   // SetInputConnection / SetInputData
+  };
+
   /// Everything a load depends on; Update() re-loads only when this changed.
   struct Settings
   {
     bool Loaded = false;
-    std::string FileName;
+    unsigned long SourceGeneration = 0;
     // The file's size and modification time: a file rewritten in place is re-read by the
     // next Update() after a Modified().
     std::uintmax_t FileSize = 0;
     long long FileTime = 0;
-    unsigned long MemoryGeneration = 0;
+    // The input data set and when it was last generated or modified upstream.
+    vtkDataObject* InputData = nullptr;
+    vtkMTimeType InputTime = 0;
     int Role = 0;
     double ValueScale = 1.0;
     double ValueOffset = 0.0;
@@ -611,28 +431,24 @@ public:
 
     bool operator==(const Settings& o) const
     {
-      return this->Loaded == o.Loaded && this->FileName == o.FileName &&
+      return this->Loaded == o.Loaded && this->SourceGeneration == o.SourceGeneration &&
         this->FileSize == o.FileSize && this->FileTime == o.FileTime &&
-        this->MemoryGeneration == o.MemoryGeneration && this->Role == o.Role &&
-        this->ValueScale == o.ValueScale && this->ValueOffset == o.ValueOffset &&
-        this->NoDataOverridden == o.NoDataOverridden && this->HasNoData == o.HasNoData &&
-        SameDouble(this->NoData, o.NoData) && this->FillVoids == o.FillVoids;
+        this->InputData == o.InputData && this->InputTime == o.InputTime &&
+        this->Role == o.Role && this->ValueScale == o.ValueScale &&
+        this->ValueOffset == o.ValueOffset && this->NoDataOverridden == o.NoDataOverridden &&
+        this->HasNoData == o.HasNoData && SameDouble(this->NoData, o.NoData) &&
+        this->FillVoids == o.FillVoids;
     }
   };
 
   Settings LastLoad;
-  vtkTimeStamp LoadTime;
 
-  // In-memory source (SetHeightData / SetColorData).
-  bool HasMemoryData = false;
-  unsigned long MemoryGeneration = 0;
+  // Where the data comes from; every change of source bumps the generation.
+  Sources Source = None;
+  unsigned long SourceGeneration = 0;
+  vtkNew<vtkGlobeLayerInput> Sink;
+  vtkNew<vtkGlobeRasterReader> Reader; // for FileName
   int MemoryRole = Height;
-  int MemoryWidth = 0;
-  int MemoryHeight = 0;
-  int MemoryComponents = 0;
-  std::vector<float> MemoryHeights;
-  std::vector<unsigned char> MemoryColors;
-  double MemoryExtent[4] = { 0, 0, 0, 0 };
 
   // Results.
   vtkSmartPointer<vtkDataArray> Data;
@@ -641,11 +457,10 @@ public:
   double PixelSize[2] = { NaN, NaN };
   std::string DefaultName;
 
-  void ClearMemory()
+  void SetSource(Sources source)
   {
-    this->HasMemoryData = false;
-    std::vector<float>().swap(this->MemoryHeights);
-    std::vector<unsigned char>().swap(this->MemoryColors);
+    this->Source = source;
+    ++this->SourceGeneration;
   }
 };
 
@@ -653,6 +468,11 @@ public:
 vtkGlobeLayer::vtkGlobeLayer()
   : Internals(new vtkInternals)
 {
+  // The layer reports the internal reader's failures itself (naming the file and the reason,
+  // to the layer's observers): keep the reader and its executive quiet.
+  vtkNew<vtkCallbackCommand> quiet;
+  this->Internals->Reader->AddObserver(vtkCommand::ErrorEvent, quiet);
+  this->Internals->Reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, quiet);
 }
 
 vtkGlobeLayer::~vtkGlobeLayer()
@@ -702,19 +522,71 @@ void vtkGlobeLayer::SetFileName(const char* fileName)
   {
     return;
   }
+  vtkInternals& in = *this->Internals;
   delete[] this->FileName;
   this->FileName = nullptr;
-  this->Internals->DefaultName.clear();
+  in.DefaultName.clear();
   if (fileName)
   {
     const size_t n = std::strlen(fileName) + 1;
     this->FileName = new char[n];
     std::memcpy(this->FileName, fileName, n);
-    this->Internals->DefaultName = std::filesystem::path(fileName).stem().string();
-    // A file replaces in-memory data.
-    this->Internals->ClearMemory();
+    in.DefaultName = std::filesystem::path(fileName).stem().string();
+    // A file replaces in-memory data and any input connection.
+    in.Reader->SetFileName(fileName);
+    in.Sink->SetInputConnection(in.Reader->GetOutputPort());
+    in.SetSource(vtkInternals::File);
+  }
+  else if (in.Source == vtkInternals::File)
+  {
+    in.Reader->SetFileName(nullptr);
+    in.Sink->SetInputConnection(nullptr);
+    in.SetSource(vtkInternals::None);
   }
   this->Modified();
+}
+
+vtkGlobeRasterReader* vtkGlobeLayer::GetFileReader()
+{
+  return this->Internals->Reader;
+}
+
+//------------------------------------------------------------------------------------------
+void vtkGlobeLayer::SetInputConnection(vtkAlgorithmOutput* output)
+{
+  vtkInternals& in = *this->Internals;
+  if (in.Source == vtkInternals::Input && output && in.Sink->GetNumberOfInputConnections(0) == 1 &&
+    in.Sink->GetInputConnection(0, 0) == output)
+  {
+    return;
+  }
+  this->SetFileName(nullptr);
+  in.DefaultName.clear();
+  in.Sink->SetInputConnection(output);
+  in.SetSource(output ? vtkInternals::Input : vtkInternals::None);
+  this->Modified();
+}
+
+void vtkGlobeLayer::SetInputData(vtkDataObject* data)
+{
+  vtkInternals& in = *this->Internals;
+  this->SetFileName(nullptr);
+  in.DefaultName.clear();
+  in.Sink->SetInputDataObject(data);
+  in.SetSource(data ? vtkInternals::Input : vtkInternals::None);
+  this->Modified();
+}
+
+vtkAlgorithmOutput* vtkGlobeLayer::GetInputConnection()
+{
+  vtkInternals& in = *this->Internals;
+  return in.Sink->GetNumberOfInputConnections(0) > 0 ? in.Sink->GetInputConnection(0, 0) : nullptr;
+}
+
+vtkAlgorithm* vtkGlobeLayer::GetInputAlgorithm()
+{
+  vtkInternals& in = *this->Internals;
+  return in.Sink->GetNumberOfInputConnections(0) > 0 ? in.Sink->GetInputAlgorithm(0, 0) : nullptr;
 }
 
 //------------------------------------------------------------------------------------------
@@ -796,6 +668,7 @@ double vtkGlobeLayer::GetDegreesPerPixel(int axis)
   return this->Internals->PixelSize[axis];
 }
 
+
 //------------------------------------------------------------------------------------------
 void vtkGlobeLayer::Invalidate()
 {
@@ -822,21 +695,49 @@ void vtkGlobeLayer::Invalidate()
 bool vtkGlobeLayer::Update()
 {
   vtkInternals& in = *this->Internals;
-  if (this->Valid && this->GetMTime() <= in.LoadTime.GetMTime())
+  if (in.Source == vtkInternals::None)
   {
-    return true; // nothing modified since the last load
+    ++this->NumberOfLoads;
+    this->Invalidate();
+    vtkErrorMacro(<< "Nothing to load: no FileName is set, no input is connected and no "
+                     "in-memory data was given");
+    return false;
   }
   vtkInternals::Settings now;
   now.Loaded = true;
-  now.FileName = this->FileName ? this->FileName : "";
-  now.MemoryGeneration = in.HasMemoryData ? in.MemoryGeneration : 0;
-  if (!in.HasMemoryData && !now.FileName.empty())
+  now.SourceGeneration = in.SourceGeneration;
+  if (in.Source == vtkInternals::File)
   {
     std::error_code ec;
-    now.FileSize = std::filesystem::file_size(now.FileName, ec);
-    const auto time = std::filesystem::last_write_time(now.FileName, ec);
+    now.FileSize = std::filesystem::file_size(this->FileName, ec);
+    const auto time = std::filesystem::last_write_time(this->FileName, ec);
     now.FileTime = ec ? 0 : static_cast<long long>(time.time_since_epoch().count());
+    // A file rewritten in place, or one that failed (it may have appeared or been repaired),
+    // is read again.
+    if (!this->Valid || now.FileSize != in.LastLoad.FileSize ||
+      now.FileTime != in.LastLoad.FileTime)
+    {
+      in.Reader->Modified();
+    }
   }
+
+  // Bring the input up to date: upstream algorithms re-execute only when they, or what they
+  // depend on, were modified since they last ran.
+  in.Sink->Modified();
+  auto* executive = vtkStreamingDemandDrivenPipeline::SafeDownCast(in.Sink->GetExecutive());
+  bool updated = false;
+  try
+  {
+    updated = executive && executive->UpdateWholeExtent() != 0;
+  }
+  catch (const std::exception&)
+  {
+    updated = false;
+  }
+  vtkDataObject* input =
+    in.Sink->GetNumberOfInputConnections(0) > 0 ? in.Sink->GetInputDataObject(0, 0) : nullptr;
+  now.InputData = input;
+  now.InputTime = input ? std::max(input->GetUpdateTime(), input->GetMTime()) : 0;
   now.Role = this->IsImageRole() ? Color : Height; // images load alike whatever their role
   now.ValueScale = this->ValueScale;
   now.ValueOffset = this->ValueOffset;
@@ -846,25 +747,29 @@ bool vtkGlobeLayer::Update()
   now.FillVoids = this->FillVoids;
   if (this->Valid && now == in.LastLoad)
   {
-    in.LoadTime.Modified(); // only e.g. the Name changed: nothing to re-read
-    return true;
+    return true; // nothing the data depends on changed (e.g. only the Name)
   }
 
   ++this->NumberOfLoads;
   this->Invalidate();
   bool ok = false;
-  try
+  if (!updated)
   {
-    ok = this->Load();
+    this->ReportInputFailure();
   }
-  catch (const std::exception& e)
+  else
   {
-    // E.g. std::bad_alloc for a corrupt header that claims a gigantic raster.
-    const std::string what = now.FileName.empty() ? "in-memory data" : "'" + now.FileName + "'";
-    const bool memory = dynamic_cast<const std::bad_alloc*>(&e) != nullptr;
-    vtkErrorMacro(<< "Cannot load " << what << ": "
-                  << (memory ? std::string("not enough memory") : std::string(e.what())));
-    ok = false;
+    try
+    {
+      ok = this->Load(vtkImageData::SafeDownCast(input));
+    }
+    catch (const std::exception& e)
+    {
+      const bool memory = dynamic_cast<const std::bad_alloc*>(&e) != nullptr;
+      vtkErrorMacro(<< "Cannot load " << this->DescribeSource() << ": "
+                    << (memory ? std::string("not enough memory") : std::string(e.what())));
+      ok = false;
+    }
   }
   if (!ok)
   {
@@ -873,299 +778,177 @@ bool vtkGlobeLayer::Update()
   }
   this->Valid = true;
   in.LastLoad = now;
-  in.LoadTime.Modified();
   return true;
 }
 
-bool vtkGlobeLayer::Load()
+//------------------------------------------------------------------------------------------
+std::string vtkGlobeLayer::DescribeSource()
 {
+  vtkInternals& in = *this->Internals;
+  switch (in.Source)
+  {
+    case vtkInternals::File:
+      return "'" + std::string(this->FileName) + "'";
+    case vtkInternals::Memory:
+      return in.MemoryRole == Height ? "in-memory height data" : "in-memory color data";
+    default:
+    {
+      vtkDataObject* input =
+        in.Sink->GetNumberOfInputConnections(0) > 0 ? in.Sink->GetInputDataObject(0, 0) : nullptr;
+      const std::string file = FieldString(input ? input->GetFieldData() : nullptr,
+        vtkGlobeRasterReader::GetFileNameArrayName());
+      return file.empty() ? std::string("the layer's input") : "'" + file + "' (the layer's input)";
+    }
+  }
+}
+
+void vtkGlobeLayer::ReportInputFailure()
+{
+  vtkInternals& in = *this->Internals;
+  if (in.Source == vtkInternals::File)
+  {
+    const std::string why = in.Reader->GetLastError();
+    vtkErrorMacro(<< "Cannot load '" << this->FileName
+                  << "': " << (why.empty() ? std::string("it could not be read") : why));
+    return;
+  }
+  // The first reader up the pipeline that says why.
+  vtkAlgorithm* algorithm = this->GetInputAlgorithm();
+  for (int depth = 0; algorithm && depth < 64; ++depth)
+  {
+    auto* reader = vtkGlobeRasterReader::SafeDownCast(algorithm);
+    if (reader && *reader->GetLastError())
+    {
+      vtkErrorMacro(<< "Cannot load the layer's input: '"
+                    << (reader->GetFileName() ? reader->GetFileName() : "") << "' "
+                    << reader->GetLastError());
+      return;
+    }
+    algorithm = algorithm->GetNumberOfInputPorts() > 0 &&
+        algorithm->GetNumberOfInputConnections(0) > 0
+      ? algorithm->GetInputAlgorithm(0, 0)
+      : nullptr;
+  }
+  vtkAlgorithm* first = this->GetInputAlgorithm();
+  vtkErrorMacro(<< "Cannot load the layer's input: its pipeline failed to update"
+                << (first ? std::string(" (") + first->GetClassName() + " and upstream)" : "")
+                << "; see their errors");
+}
+
+//------------------------------------------------------------------------------------------
+bool vtkGlobeLayer::Load(vtkImageData* image)
+{
+  vtkInternals& in = *this->Internals;
+  const std::string what = this->DescribeSource();
+  const auto fail = [this, &what](const std::string& why)
+  {
+    vtkErrorMacro(<< "Cannot load " << what << ": " << why);
+    return false;
+  };
   if (this->Role == Height &&
     (!std::isfinite(this->ValueScale) || !std::isfinite(this->ValueOffset)))
   {
-    vtkErrorMacro(<< "Cannot load '" << (this->FileName ? this->FileName : "in-memory data")
-                  << "': ValueScale and ValueOffset must be finite (" << this->ValueScale << ", "
-                  << this->ValueOffset << ")");
+    char text[160];
+    std::snprintf(text, sizeof(text), "ValueScale and ValueOffset must be finite (%g, %g)",
+      this->ValueScale, this->ValueOffset);
+    return fail(text);
+  }
+  if (in.Source == vtkInternals::Memory && (in.MemoryRole == Height) != (this->Role == Height))
+  {
+    vtkErrorMacro(<< "Cannot load " << what << " as a " << this->GetRoleAsString()
+                  << " layer: the role does not match the data");
     return false;
   }
-  if (this->Internals->HasMemoryData)
+  if (!image)
   {
-    return this->LoadMemory();
+    return fail("it is not a vtkImageData");
   }
-  if (!this->FileName || !*this->FileName)
+  vtkDataArray* scalars = image->GetPointData()->GetScalars();
+  int extent[6];
+  image->GetExtent(extent);
+  const int width = extent[1] - extent[0] + 1;
+  const int height = extent[3] - extent[2] + 1;
+  if (width <= 0 || height <= 0 || extent[5] != extent[4] || !scalars ||
+    scalars->GetNumberOfTuples() != static_cast<vtkIdType>(width) * height)
   {
-    vtkErrorMacro(<< "Nothing to load: no FileName is set and no in-memory data was given");
-    return false;
+    return fail("it is not a 2D image with point scalars (extent " + std::to_string(width) + " x " +
+      std::to_string(height) + ")");
   }
-  return this->LoadFile();
-}
-
-//------------------------------------------------------------------------------------------
-namespace
-{
-/// The common end of loading heights: scale/offset, voids, range, fill. `values` holds raw
-/// values with NaN for voids. Returns false (with `why`) when no post is valid.
-bool FinishHeights(std::vector<float>& values, int width, int height, double scale, double offset,
-  bool fill, vtkIdType& voids, double& minimum, double& maximum, std::string& why,
-  vtkSmartPointer<vtkDataArray>& data)
-{
-  voids = 0;
-  minimum = std::numeric_limits<double>::infinity();
-  maximum = -minimum;
-  for (float& v : values)
-  {
-    if (!std::isfinite(v))
-    {
-      v = NaNf; // +-Inf are voids too
-      ++voids;
-      continue;
-    }
-    v = static_cast<float>(v * scale + offset);
-    minimum = std::min(minimum, static_cast<double>(v));
-    maximum = std::max(maximum, static_cast<double>(v));
-  }
-  if (voids == static_cast<vtkIdType>(values.size()))
-  {
-    why = "it has no valid height: all " + std::to_string(voids) + " posts are nodata or NaN";
-    return false;
-  }
-  if (fill && voids > 0)
-  {
-    PushPullFill(values, width, height);
-  }
-  vtkNew<vtkFloatArray> array;
-  array->SetName("Height");
-  array->SetNumberOfComponents(1);
-  array->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
-  std::copy(values.begin(), values.end(), array->GetPointer(0));
-  data = array;
-  return true;
-}
-
-/// The common end of loading colour: RGB(A) -> RGBA, nodata pixels transparent.
-void FinishColors(const std::vector<unsigned char>& pixels, size_t n, int components,
-  bool hasNoData, double noData, vtkIdType& voids, vtkSmartPointer<vtkDataArray>& data)
-{
-  vtkNew<vtkUnsignedCharArray> array;
-  array->SetName("Color");
-  array->SetNumberOfComponents(4);
-  array->SetNumberOfTuples(static_cast<vtkIdType>(n));
-  unsigned char* out = array->GetPointer(0);
-  // Nodata applies only when it is a possible 8-bit value.
-  const bool useNoData =
-    hasNoData && noData >= 0.0 && noData <= 255.0 && noData == std::floor(noData);
-  const unsigned char nd = useNoData ? static_cast<unsigned char>(noData) : 0;
-  voids = 0;
-  for (size_t i = 0; i < n; ++i)
-  {
-    const unsigned char* p = pixels.data() + i * components;
-    out[4 * i + 0] = p[0];
-    out[4 * i + 1] = p[1];
-    out[4 * i + 2] = p[2];
-    out[4 * i + 3] = components == 4 ? p[3] : 255;
-    // As GDAL's per-dataset nodata mask: a pixel is missing when all its bands are nodata.
-    if (useNoData && p[0] == nd && p[1] == nd && p[2] == nd)
-    {
-      out[4 * i + 3] = 0;
-      ++voids;
-    }
-  }
-  data = array;
-}
-} // namespace
-
-//------------------------------------------------------------------------------------------
-bool vtkGlobeLayer::LoadFile()
-{
-  vtkInternals& in = *this->Internals;
-  const std::string file = this->FileName;
-  const auto fail = [this, &file](const std::string& why)
-  {
-    vtkErrorMacro(<< "Cannot load '" << file << "': " << why);
-    return false;
-  };
-
-  std::error_code ec;
-  if (!std::filesystem::exists(file, ec))
-  {
-    return fail("the file does not exist");
-  }
-  if (!std::filesystem::is_regular_file(file, ec))
-  {
-    return fail("it is not a regular file");
-  }
-
-  // Pixels: OpenImageIO.
-  // Keep colour with an alpha channel as stored (straight alpha, as GeoTIFF writers mean
-  // it): by default OpenImageIO premultiplies unassociated alpha.
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  auto input = OIIO::ImageInput::open(file, &config);
-  if (!input)
-  {
-    return fail("it cannot be opened as an image: not an image file, or corrupt or truncated "
-                "(OpenImageIO: " +
-      OIIO::geterror() + ")");
-  }
-  const OIIO::ImageSpec spec = input->spec();
-  const int width = spec.width;
-  const int height = spec.height;
-  const int channels = spec.nchannels;
-  if (width <= 0 || height <= 0 || spec.depth > 1 || spec.deep)
-  {
-    return fail("its raster size (" + std::to_string(width) + " x " + std::to_string(height) +
-      ") is not a plain 2D image");
-  }
+  const int channels = scalars->GetNumberOfComponents();
   if (this->Role == Height && channels != 1)
   {
     return fail("a Height layer needs a 1-channel raster, and it has " + std::to_string(channels) +
       " channels");
   }
-  if (this->Role != Height && channels != 3 && channels != 4)
+  // A mask may be a single grey channel (1 = water); the other images are RGB or RGBA.
+  const bool grey = this->Role == Mask && channels == 1;
+  if (this->Role != Height && channels != 3 && channels != 4 && !grey)
   {
-    return fail(std::string("a ") + this->GetRoleAsString() + " layer needs a 3-channel (RGB) or 4-channel (RGBA) raster, and it has " +
+    return fail(std::string("a ") + this->GetRoleAsString() +
+      " layer needs a 3-channel (RGB) or 4-channel (RGBA) raster" +
+      (this->Role == Mask ? " or a 1-channel mask" : "") + ", and it has " +
       std::to_string(channels) + " channel" + (channels == 1 ? "" : "s"));
   }
 
-  // Georeferencing and nodata: libgeotiff (before decoding, which may be long).
-  GeoInfo geo;
-  std::string why;
-  if (!ReadGeoTIFF(file, geo, why))
+  // Georeferencing: the grid from the image's geometry (filters that crop or resample keep it
+  // right), the rest from the reader's field data.
+  vtkFieldData* fd = image->GetFieldData();
+  double modelType = 0.0, epsg = 0.0;
+  if (!FieldValue(fd, vtkGlobeRasterReader::GetModelTypeArrayName(), 0, modelType))
   {
-    return fail(why);
+    return fail(std::string("it has no georeferencing: its field data has no ") +
+      vtkGlobeRasterReader::GetModelTypeArrayName() +
+      " array (read it with vtkGlobeRasterReader, and keep its field data through the filters)");
   }
-  if (geo.Width != width || geo.Height != height)
+  if (modelType != Geographic && modelType != Projected)
   {
-    return fail("libtiff and OpenImageIO disagree on its size");
+    return fail("its model type (" + std::to_string(modelType) +
+      ") is neither geographic (1) nor projected (2)");
   }
-  if (geo.NoDataUnparsed)
+  FieldValue(fd, vtkGlobeRasterReader::GetEPSGArrayName(), 0, epsg);
+  const double* origin = image->GetOrigin();
+  const double* spacing = image->GetSpacing();
+  if (!(spacing[0] > 0.0) || !(spacing[1] > 0.0) || !std::isfinite(origin[0]) ||
+    !std::isfinite(origin[1]) || !std::isfinite(spacing[0]) || !std::isfinite(spacing[1]))
   {
-    vtkWarningMacro(<< "'" << file << "': the GDAL_NODATA tag is not a number; ignored");
+    return fail("its spacing must be positive and its origin finite");
   }
-
-  // Decode. Integer heights in their native type: OpenImageIO's float conversion would
-  // normalise them to [-1, 1].
-  const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
-  std::vector<float> heights;
-  std::vector<unsigned char> pixels;
-  if (!this->NoDataValueOverridden)
+  double t[4] = { origin[0] + (extent[0] - 0.5) * spacing[0],
+    origin[1] + (extent[3] + 0.5) * spacing[1], spacing[0], spacing[1] };
+  double field[4];
+  bool hasField = true;
+  for (int i = 0; i < 4; ++i)
   {
-    this->HasNoDataValue = geo.HasNoData;
-    this->NoDataValue = geo.HasNoData ? geo.NoData : 0.0;
+    hasField =
+      hasField && FieldValue(fd, vtkGlobeRasterReader::GetGeoTransformArrayName(), i, field[i]);
   }
-  const bool hasNoData = this->HasNoDataValue;
-  const double noData = this->NoDataValue;
-  bool read = false;
-  if (this->Role == Height)
+  // The reader's exact numbers when the grid is still the one it read.
+  const bool sameGrid = hasField && std::abs(field[0] - t[0]) <= 1e-6 * t[2] &&
+    std::abs(field[1] - t[1]) <= 1e-6 * t[3] && std::abs(field[2] - t[2]) <= 1e-12 * t[2] &&
+    std::abs(field[3] - t[3]) <= 1e-12 * t[3];
+  if (sameGrid)
   {
-    OIIO::TypeDesc type = spec.format;
-    switch (type.basetype)
+    std::copy(field, field + 4, t);
+  }
+  if (modelType == Geographic)
+  {
+    double west = t[0], east = t[0] + width * t[2];
+    double north = t[1], south = t[1] - height * t[3];
+    double box[4];
+    bool hasBox = sameGrid;
+    for (int i = 0; i < 4; ++i)
     {
-      case OIIO::TypeDesc::UINT8:
-      case OIIO::TypeDesc::INT8:
-      case OIIO::TypeDesc::UINT16:
-      case OIIO::TypeDesc::INT16:
-      case OIIO::TypeDesc::UINT32:
-      case OIIO::TypeDesc::INT32:
-      case OIIO::TypeDesc::FLOAT:
-      case OIIO::TypeDesc::DOUBLE:
-        break;
-      case OIIO::TypeDesc::HALF:
-        type = OIIO::TypeDesc::FLOAT; // exact widening, no rescaling
-        break;
-      default:
-        return fail("its sample type (" + std::string(spec.format.c_str()) +
-          ") is not supported for heights");
+      hasBox = hasBox &&
+        FieldValue(fd, vtkGlobeRasterReader::GetGeographicExtentArrayName(), i, box[i]);
     }
-    std::vector<unsigned char> bytes(n * type.size());
-    read = input->read_image(0, 0, 0, 1, type, bytes.data());
-    if (read)
+    if (hasBox)
     {
-      switch (type.basetype)
-      {
-        case OIIO::TypeDesc::UINT8:
-          SamplesToFloat<uint8_t>(bytes, n, hasNoData, noData, heights);
-          break;
-        case OIIO::TypeDesc::INT8:
-          SamplesToFloat<int8_t>(bytes, n, hasNoData, noData, heights);
-          break;
-        case OIIO::TypeDesc::UINT16:
-          SamplesToFloat<uint16_t>(bytes, n, hasNoData, noData, heights);
-          break;
-        case OIIO::TypeDesc::INT16:
-          SamplesToFloat<int16_t>(bytes, n, hasNoData, noData, heights);
-          break;
-        case OIIO::TypeDesc::UINT32:
-          SamplesToFloat<uint32_t>(bytes, n, hasNoData, noData, heights);
-          break;
-        case OIIO::TypeDesc::INT32:
-          SamplesToFloat<int32_t>(bytes, n, hasNoData, noData, heights);
-          break;
-        case OIIO::TypeDesc::FLOAT:
-          SamplesToFloat<float>(bytes, n, hasNoData, noData, heights);
-          break;
-        default:
-          SamplesToFloat<double>(bytes, n, hasNoData, noData, heights);
-          break;
-      }
+      west = box[0];
+      east = box[1];
+      south = box[2];
+      north = box[3];
     }
-  }
-  else
-  {
-    pixels.resize(n * channels);
-    read = input->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, pixels.data());
-  }
-  if (!read)
-  {
-    std::string error = input->geterror();
-    if (error.empty())
-    {
-      error = OIIO::geterror();
-    }
-    return fail("its pixels cannot be decoded; the file is corrupt or truncated (OpenImageIO: " +
-      error + ")");
-  }
-  input->close();
-
-  // Store north-up and west-to-east, so row 0 is the north row.
-  double* t = geo.T;
-  if (t[5] > 0.0)
-  {
-    t[3] += height * t[5];
-    t[5] = -t[5];
-    if (this->Role == Height)
-    {
-      FlipRows(heights, width, height, 1);
-    }
-    else
-    {
-      FlipRows(pixels, width, height, channels);
-    }
-  }
-  if (t[1] < 0.0)
-  {
-    t[0] += width * t[1];
-    t[1] = -t[1];
-    if (this->Role == Height)
-    {
-      FlipColumns(heights, width, height, 1);
-    }
-    else
-    {
-      FlipColumns(pixels, width, height, channels);
-    }
-  }
-  in.Origin[0] = t[0];
-  in.Origin[1] = t[3];
-  in.PixelSize[0] = t[1];
-  in.PixelSize[1] = -t[5];
-  if (geo.ModelType == Geographic)
-  {
-    const double west = t[0], east = t[0] + width * t[1];
-    const double north = t[3], south = t[3] + height * t[5];
-    // Points-registered global grids reach half a pixel beyond the poles and the date line;
-    // more than a pixel means the coordinates are not degrees.
-    if (south < -90.0 - in.PixelSize[1] || north > 90.0 + in.PixelSize[1] ||
-      east - west > 360.0 + in.PixelSize[0])
+    if (south < -90.0 - t[3] || north > 90.0 + t[3] || east - west > 360.0 + t[2])
     {
       char text[200];
       std::snprintf(text, sizeof(text),
@@ -1178,9 +961,31 @@ bool vtkGlobeLayer::LoadFile()
     in.Extent[2] = south;
     in.Extent[3] = north;
   }
+  double noData = 0.0;
+  const bool fileNoData =
+    FieldValue(fd, vtkGlobeRasterReader::GetNoDataValueArrayName(), 0, noData);
+  if (!this->NoDataValueOverridden)
+  {
+    this->HasNoDataValue = fileNoData;
+    this->NoDataValue = fileNoData ? noData : 0.0;
+  }
+  const bool hasNoData = this->HasNoDataValue;
+  noData = this->NoDataValue;
 
+  // Values, row 0 north.
+  const size_t n = static_cast<size_t>(width) * height;
   if (this->Role == Height)
   {
+    std::vector<float> heights;
+    switch (scalars->GetDataType())
+    {
+      vtkTemplateMacro(SamplesToFloat(static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)),
+        width, height, hasNoData, noData, heights));
+      default:
+        return fail(std::string("its sample type (") + scalars->GetDataTypeAsString() +
+          ") is not supported for heights");
+    }
+    std::string why;
     if (!FinishHeights(heights, width, height, this->ValueScale, this->ValueOffset, this->FillVoids,
           this->NumberOfVoids, this->MinimumValue, this->MaximumValue, why, in.Data))
     {
@@ -1190,101 +995,116 @@ bool vtkGlobeLayer::LoadFile()
   }
   else
   {
-    FinishColors(pixels, n, channels, hasNoData, noData, this->NumberOfVoids, in.Data);
+    std::vector<unsigned char> pixels(n * channels);
+    auto* bytes = vtkUnsignedCharArray::SafeDownCast(scalars);
+    for (int r = 0; r < height; ++r)
+    {
+      const vtkIdType from = static_cast<vtkIdType>(height - 1 - r) * width;
+      unsigned char* dst = pixels.data() + static_cast<size_t>(r) * width * channels;
+      if (bytes)
+      {
+        std::memcpy(dst, bytes->GetPointer(from * channels), static_cast<size_t>(width) * channels);
+        continue;
+      }
+      // Other types (a filter's output): clamped and rounded to 8 bits.
+      for (int i = 0; i < width * channels; ++i)
+      {
+        const double v = scalars->GetComponent(from + i / channels, i % channels);
+        dst[i] = static_cast<unsigned char>(std::isnan(v) ? 0.0 : std::clamp(std::round(v), 0.0, 255.0));
+      }
+    }
+    if (grey)
+    {
+      std::vector<unsigned char> rgb(n * 3);
+      for (size_t i = 0; i < n; ++i)
+      {
+        rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = pixels[i];
+      }
+      pixels.swap(rgb);
+    }
+    FinishColors(pixels, n, grey ? 3 : channels, hasNoData, noData, this->NumberOfVoids, in.Data);
     this->NumberOfComponents = 4;
   }
   this->RasterWidth = width;
   this->RasterHeight = height;
-  this->ModelType = geo.ModelType;
-  this->EPSG = geo.EPSG;
-  this->DatumSemiMajorAxis = geo.SemiMajor;
-  this->DatumSemiMinorAxis = geo.SemiMinor;
+  this->ModelType = static_cast<int>(modelType);
+  this->EPSG = static_cast<int>(epsg);
+  double axis = 0.0;
+  if (FieldValue(fd, vtkGlobeRasterReader::GetDatumSemiAxesArrayName(), 0, axis))
+  {
+    this->DatumSemiMajorAxis = axis;
+    FieldValue(fd, vtkGlobeRasterReader::GetDatumSemiAxesArrayName(), 1, axis);
+    this->DatumSemiMinorAxis = axis;
+  }
+  in.Origin[0] = t[0];
+  in.Origin[1] = t[1];
+  in.PixelSize[0] = t[2];
+  in.PixelSize[1] = t[3];
+  if (in.Source == vtkInternals::Input && !this->FileName)
+  {
+    const std::string file = FieldString(fd, vtkGlobeRasterReader::GetFileNameArrayName());
+    in.DefaultName = file.empty() ? std::string() : std::filesystem::path(file).stem().string();
+  }
   return true;
 }
 
 //------------------------------------------------------------------------------------------
-bool vtkGlobeLayer::LoadMemory()
+void vtkGlobeLayer::SetMemoryImage(int role, int width, int height, int components,
+  int scalarType, const void* values, const double extent[4])
 {
   vtkInternals& in = *this->Internals;
-  const char* what = in.MemoryRole == Height ? "in-memory height data" : "in-memory color data";
-  if ((in.MemoryRole == Height) != (this->Role == Height))
+  vtkNew<vtkImageData> image;
+  const double dx = (extent[1] - extent[0]) / width, dy = (extent[3] - extent[2]) / height;
+  image->SetExtent(0, width - 1, 0, height - 1, 0, 0);
+  image->SetSpacing(dx, dy, 1.0);
+  image->SetOrigin(extent[0] + 0.5 * dx, extent[2] + 0.5 * dy, 0.0);
+  image->AllocateScalars(scalarType, components);
+  vtkDataArray* scalars = image->GetPointData()->GetScalars();
+  scalars->SetName(role == Height ? "Height" : "Color");
+  // Given north first; VTK images are south first.
+  const size_t row = static_cast<size_t>(width) * components * scalars->GetDataTypeSize();
+  for (int r = 0; r < height; ++r)
   {
-    vtkErrorMacro(<< "Cannot load " << what << " as a " << this->GetRoleAsString()
-                  << " layer: the role does not match the data");
-    return false;
+    std::memcpy(static_cast<unsigned char*>(scalars->GetVoidPointer(0)) + row * (height - 1 - r),
+      static_cast<const unsigned char*>(values) + row * r, row);
   }
-  const int width = in.MemoryWidth;
-  const int height = in.MemoryHeight;
-  const size_t n = static_cast<size_t>(width) * height;
-  const bool hasNoData = this->NoDataValueOverridden && this->HasNoDataValue;
-  if (!this->NoDataValueOverridden)
+  vtkNew<vtkIntArray> model;
+  model->SetName(vtkGlobeRasterReader::GetModelTypeArrayName());
+  model->InsertNextValue(Geographic);
+  image->GetFieldData()->AddArray(model);
+  vtkNew<vtkIntArray> epsg;
+  epsg->SetName(vtkGlobeRasterReader::GetEPSGArrayName());
+  epsg->InsertNextValue(0);
+  image->GetFieldData()->AddArray(epsg);
+  vtkNew<vtkDoubleArray> transform;
+  transform->SetName(vtkGlobeRasterReader::GetGeoTransformArrayName());
+  for (double v : { extent[0], extent[3], dx, dy })
   {
-    this->HasNoDataValue = false;
-    this->NoDataValue = 0.0;
+    transform->InsertNextValue(v);
   }
-  if (this->Role == Height)
+  image->GetFieldData()->AddArray(transform);
+  vtkNew<vtkDoubleArray> box;
+  box->SetName(vtkGlobeRasterReader::GetGeographicExtentArrayName());
+  for (int i = 0; i < 4; ++i)
   {
-    std::vector<float> heights(in.MemoryHeights);
-    float nd = 0.0f;
-    if (hasNoData && NoDataAs(this->NoDataValue, nd))
-    {
-      std::replace(heights.begin(), heights.end(), nd, NaNf);
-    }
-    std::string why;
-    if (!FinishHeights(heights, width, height, this->ValueScale, this->ValueOffset, this->FillVoids,
-          this->NumberOfVoids, this->MinimumValue, this->MaximumValue, why, in.Data))
-    {
-      vtkErrorMacro(<< "Cannot load " << what << ": " << why);
-      return false;
-    }
-    this->NumberOfComponents = 1;
+    box->InsertNextValue(extent[i]);
   }
-  else
-  {
-    FinishColors(in.MemoryColors, n, in.MemoryComponents, hasNoData, this->NoDataValue,
-      this->NumberOfVoids, in.Data);
-    this->NumberOfComponents = 4;
-  }
-  this->RasterWidth = width;
-  this->RasterHeight = height;
-  this->ModelType = Geographic;
-  this->EPSG = 0;
-  std::copy(in.MemoryExtent, in.MemoryExtent + 4, in.Extent);
-  in.Origin[0] = in.Extent[0];
-  in.Origin[1] = in.Extent[3];
-  in.PixelSize[0] = (in.Extent[1] - in.Extent[0]) / width;
-  in.PixelSize[1] = (in.Extent[3] - in.Extent[2]) / height;
-  return true;
+  image->GetFieldData()->AddArray(box);
+  in.Sink->SetInputDataObject(image);
+  in.MemoryRole = role;
+  in.SetSource(vtkInternals::Memory);
+  this->SetRole(role);
+  this->Update();
 }
-
-//------------------------------------------------------------------------------------------
-namespace
-{
-bool CheckMemoryInput(int width, int height, const void* values, std::string& why)
-{
-  if (width <= 0 || height <= 0)
-  {
-    why =
-      "the size (" + std::to_string(width) + " x " + std::to_string(height) + ") must be positive";
-    return false;
-  }
-  if (!values)
-  {
-    why = "no values were given";
-    return false;
-  }
-  return true;
-}
-} // namespace
 
 void vtkGlobeLayer::SetHeightData(
   int width, int height, const float* values, double west, double east, double south, double north)
 {
   vtkInternals& in = *this->Internals;
-  // In-memory data replaces the file.
+  // In-memory data replaces the file and any input.
   this->SetFileName(nullptr);
-  in.ClearMemory();
-  ++in.MemoryGeneration;
+  in.Sink->SetInputConnection(nullptr);
+  in.SetSource(vtkInternals::None);
   this->Invalidate();
   this->Modified();
   std::string why;
@@ -1293,16 +1113,8 @@ void vtkGlobeLayer::SetHeightData(
     vtkErrorMacro(<< "SetHeightData: rejected in-memory height data: " << why);
     return;
   }
-  in.MemoryRole = Height;
-  in.MemoryWidth = width;
-  in.MemoryHeight = height;
-  in.MemoryComponents = 1;
-  in.MemoryHeights.assign(values, values + static_cast<size_t>(width) * height);
   const double extent[4] = { west, east, south, north };
-  std::copy(extent, extent + 4, in.MemoryExtent);
-  in.HasMemoryData = true;
-  this->SetRole(Height);
-  this->Update();
+  this->SetMemoryImage(Height, width, height, 1, VTK_FLOAT, values, extent);
 }
 
 void vtkGlobeLayer::SetColorData(int width, int height, int components, const unsigned char* values,
@@ -1310,8 +1122,8 @@ void vtkGlobeLayer::SetColorData(int width, int height, int components, const un
 {
   vtkInternals& in = *this->Internals;
   this->SetFileName(nullptr);
-  in.ClearMemory();
-  ++in.MemoryGeneration;
+  in.Sink->SetInputConnection(nullptr);
+  in.SetSource(vtkInternals::None);
   this->Invalidate();
   this->Modified();
   std::string why;
@@ -1326,16 +1138,8 @@ void vtkGlobeLayer::SetColorData(int width, int height, int components, const un
                   << " components per pixel; 3 (RGB) or 4 (RGBA) are needed");
     return;
   }
-  in.MemoryRole = Color;
-  in.MemoryWidth = width;
-  in.MemoryHeight = height;
-  in.MemoryComponents = components;
-  in.MemoryColors.assign(values, values + static_cast<size_t>(width) * height * components);
   const double extent[4] = { west, east, south, north };
-  std::copy(extent, extent + 4, in.MemoryExtent);
-  in.HasMemoryData = true;
-  this->SetRole(Color);
-  this->Update();
+  this->SetMemoryImage(Color, width, height, components, VTK_UNSIGNED_CHAR, values, extent);
 }
 
 //------------------------------------------------------------------------------------------
@@ -1343,11 +1147,10 @@ void vtkGlobeLayer::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   const vtkInternals& in = *this->Internals;
+  static const char* const sources[] = { "(none)", "file", "in-memory data", "pipeline input" };
   os << indent << "Name: " << this->GetName() << "\n";
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
-  os << indent
-     << "Source: " << (in.HasMemoryData ? "in-memory data" : (this->FileName ? "file" : "(none)"))
-     << "\n";
+  os << indent << "Source: " << sources[in.Source] << "\n";
   os << indent << "Role: " << this->GetRoleAsString() << "\n";
   os << indent << "ValueScale: " << this->ValueScale << "\n";
   os << indent << "ValueOffset: " << this->ValueOffset << "\n";
@@ -1403,3 +1206,4 @@ void vtkGlobeLayer::PrintSelf(ostream& os, vtkIndent indent)
   }
   os.precision(precision);
 }
+

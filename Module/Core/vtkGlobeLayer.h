@@ -3,14 +3,24 @@
  * @brief   A georeferenced raster (heights or colour imagery) for the globe mapper.
  *
  * A layer is one raster the globe mapper uploads as a texture: a height map (metres) or
- * colour imagery. It comes from a GeoTIFF file (FileName) or from values given in memory
- * (SetHeightData, SetColorData). Update() loads it lazily: it re-reads only when the file
- * name or a setting that changes the data was modified since the last successful load.
+ * colour imagery. It is the end of a VTK pipeline (a sink, like a writer): its input is a
+ * vtkImageData carrying vtkGlobeRasterReader's georeferencing field data, so
+ * `layer->SetInputConnection(reader->GetOutputPort())` works and filters may sit between
+ * (vtkImageShiftScale on heights, vtkImageGaussianSmooth...). FileName is a convenience that
+ * connects an internal vtkGlobeRasterReader (GetFileReader()); SetHeightData / SetColorData
+ * give values in memory. Whichever of the three was set last is the layer's source.
  *
- * Pixels are read with OpenImageIO, integer rasters in their native type (OpenImageIO's
- * conversion to float would rescale them to [-1, 1]); georeferencing with libgeotiff
- * (model type, EPSG code, tie point + pixel scale or transformation matrix, raster type,
- * ellipsoid keys) and the nodata value from GDAL's GDAL_NODATA tag (42113).
+ * Update() brings the input pipeline up to date (upstream algorithms re-execute only when
+ * modified) and re-loads only when the input data was regenerated or a setting that changes
+ * the data was modified since the last successful load; each re-load makes a new GetData()
+ * array, so its MTime tells a renderer that the layer changed.
+ *
+ * The reader reads pixels with OpenImageIO, integer rasters in their native type (OpenImageIO's
+ * conversion to float would rescale them to [-1, 1]); georeferencing from GeoTIFF tags or a
+ * world file, and the nodata value from GDAL's GDAL_NODATA tag (42113). The grid (corner and
+ * pixel size) is taken from the input image's origin, spacing and extent, so filters that
+ * crop or resample keep it georeferenced; model type, EPSG code, nodata and datum from the
+ * field data.
  *
  * Output (GetData()): row 0 is the NORTH row, index = row * width + column.
  * - Height: a 1-component vtkFloatArray of raw * ValueScale + ValueOffset metres. Nodata
@@ -33,9 +43,9 @@
  * flipped so row 0 is north; rotated or sheared rasters are refused.
  *
  * Every failure (missing file, unreadable or truncated image, no georeferencing, a channel
- * count that does not fit the role, a raster without any valid post, bad in-memory input)
- * is reported with vtkErrorMacro naming the file and the reason, and leaves the layer
- * invalid (IsValid() false, no data kept).
+ * count that does not fit the role, a raster without any valid post, bad in-memory input, a
+ * failed input pipeline) is reported with vtkErrorMacro naming the file and the reason, and
+ * leaves the layer invalid (IsValid() false, no data kept).
  */
 #ifndef vtkGlobeLayer_h
 #define vtkGlobeLayer_h
@@ -45,8 +55,14 @@
 #include "vtkWrappingHints.h" // for VTK_SIZEHINT
 
 #include <memory> // for std::unique_ptr
+#include <string> // for std::string
 
+class vtkAlgorithm;
+class vtkAlgorithmOutput;
 class vtkDataArray;
+class vtkDataObject;
+class vtkGlobeRasterReader;
+class vtkImageData;
 
 class VTKGLOBECORE_EXPORT vtkGlobeLayer : public vtkObject
 {
@@ -163,11 +179,28 @@ public:
 
   ///@{
   /**
-   * The GeoTIFF file to read. Setting a file name replaces in-memory data given with
-   * SetHeightData / SetColorData.
+   * The georeferenced raster file to read (GeoTIFF, or an image with a world file), through
+   * the internal reader. Setting a file name replaces in-memory data given with
+   * SetHeightData / SetColorData and any input connection.
    */
   virtual void SetFileName(const char* fileName);
   vtkGetStringMacro(FileName);
+  ///@}
+
+  /// The reader FileName uses (e.g. to SetEPSG for a world file without a .prj file).
+  vtkGlobeRasterReader* GetFileReader();
+
+  ///@{
+  /**
+   * The pipeline input: a vtkImageData with vtkGlobeRasterReader's georeferencing field
+   * data (point scalars, row 0 south). Setting one replaces FileName and in-memory data.
+   * GetInputConnection / GetInputAlgorithm give what the layer reads (the internal reader's
+   * output while FileName is the source).
+   */
+  void SetInputConnection(vtkAlgorithmOutput* output);
+  void SetInputData(vtkDataObject* image);
+  vtkAlgorithmOutput* GetInputConnection();
+  vtkAlgorithm* GetInputAlgorithm();
   ///@}
 
   ///@{
@@ -214,9 +247,9 @@ public:
   ///@}
 
   /**
-   * (Re)load the layer if the file name, the in-memory data or a setting that changes the
-   * data (role, scale, offset, nodata, fill) was modified since the last successful load,
-   * or if the layer is not valid. Returns IsValid(). On failure reports with vtkErrorMacro
+   * (Re)load the layer if the source (file name, input, in-memory data), the input data
+   * (re-executed upstream) or a setting that changes the data (role, scale, offset, nodata,
+   * fill) was modified since the last successful load, or if the layer is not valid. Returns IsValid(). On failure reports with vtkErrorMacro
    * and keeps no data. Changes that do not touch the data (the Name) do not re-read; a
    * file rewritten on disk under the same name is re-read after Modified().
    */
@@ -347,9 +380,11 @@ private:
   vtkGlobeLayer(const vtkGlobeLayer&) = delete;
   void operator=(const vtkGlobeLayer&) = delete;
 
-  bool Load();
-  bool LoadFile();
-  bool LoadMemory();
+  bool Load(vtkImageData* image);
+  void SetMemoryImage(int role, int width, int height, int components, int scalarType,
+    const void* values, const double extent[4]);
+  std::string DescribeSource();
+  void ReportInputFailure();
   void Invalidate();
 
   class vtkInternals;

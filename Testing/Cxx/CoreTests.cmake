@@ -9,7 +9,9 @@ set(globe_core_tests
   TestGlobeLayerRead.cxx
   TestGlobeLayerBadInput.cxx
   TestGlobeLayerGeoTIFF.cxx
-  TestGlobeLayerVoidFill.cxx)
+  TestGlobeLayerVoidFill.cxx
+  TestGlobeRasterReader.cxx
+  TestGlobeLayerInput.cxx)
 
 create_test_sourcelist(_globe_core_driver_sources GlobeCoreCxxTests.cxx ${globe_core_tests})
 add_executable(GlobeCoreCxxTests ${_globe_core_driver_sources})
@@ -18,6 +20,7 @@ add_executable(GlobeCoreCxxTests ${_globe_core_driver_sources})
 target_include_directories(GlobeCoreCxxTests PRIVATE "${OIIO_INCLUDE_DIR}" "${GEOTIFF_INCLUDE_DIR}")
 target_link_libraries(GlobeCoreCxxTests PRIVATE
   GlobeTestSupport VTK::CommonTransforms VTK::FiltersGeneral VTK::FiltersSources VTK::TestingCore
+  VTK::ImagingCore VTK::ImagingGeneral
   "${OIIO_LIBRARY}" "${OIIO_UTIL_LIBRARY}" "${GEOTIFF_LIBRARY}" TIFF::TIFF)
 target_compile_definitions(GlobeCoreCxxTests PRIVATE
   "VTKGLOBE_TEMP_DIR=\"${CMAKE_CURRENT_BINARY_DIR}/Temporary\"")

@@ -14,7 +14,8 @@ set(globe_rendering_tests
   TestGlobeRedundantWork.cxx
   TestGlobeRenderBadInput.cxx
   TestGlobeSharedDepth.cxx
-  TestGlobeWholeEarth.cxx)
+  TestGlobeWholeEarth.cxx
+  TestGlobeLayerPipeline.cxx)
 
 create_test_sourcelist(_globe_rendering_driver_sources GlobeRenderingCxxTests.cxx
   ${globe_rendering_tests}
@@ -22,7 +23,8 @@ create_test_sourcelist(_globe_rendering_driver_sources GlobeRenderingCxxTests.cx
 add_executable(GlobeRenderingCxxTests ${_globe_rendering_driver_sources})
 target_link_libraries(GlobeRenderingCxxTests PRIVATE
   GlobeTestSupport VTKGlobe::Rendering VTK::RenderingCore VTK::RenderingOpenGL2
-  VTK::TestingRendering VTK::FiltersSources VTK::IOImage VTK::InteractionStyle VTK::opengl)
+  VTK::TestingRendering VTK::FiltersSources VTK::IOImage VTK::InteractionStyle VTK::opengl
+  VTK::ImagingCore)
 vtk_module_autoinit(TARGETS GlobeRenderingCxxTests
   MODULES VTK::RenderingOpenGL2 VTK::InteractionStyle)
 

@@ -4,6 +4,7 @@
 #define vtkGlobeTestHelpers_h
 
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
 #include <random>
 #include <string>
@@ -130,6 +131,34 @@ inline double Angle(const double a[3], const double b[3])
   const double c[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
     a[0] * b[1] - a[1] * b[0] };
   return std::atan2(Norm(c), a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
+}
+/// A test's list of checks: each is printed "ok"/"FAIL" with what it asserts; failures counted.
+struct Checklist
+{
+  int Failures = 0;
+  void Expect(bool condition, const std::string& what)
+  {
+    std::printf("  %-4s %s\n", condition ? "ok" : "FAIL", what.c_str());
+    this->Failures += condition ? 0 : 1;
+  }
+  /// Prints the count and gives the test's exit code.
+  int Result() const
+  {
+    std::printf("%d failure(s)\n", this->Failures);
+    return this->Failures == 0 ? 0 : 1;
+  }
+};
+
+/// printf into a std::string (up to 1023 characters).
+inline std::string Printf(const char* format, ...) __attribute__((format(printf, 1, 2)));
+inline std::string Printf(const char* format, ...)
+{
+  char buffer[1024];
+  va_list args;
+  va_start(args, format);
+  std::vsnprintf(buffer, sizeof(buffer), format, args);
+  va_end(args);
+  return buffer;
 }
 } // namespace vtkGlobeTest
 

@@ -1,0 +1,1375 @@
+#include "vtkGlobeRasterReader.h"
+
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkErrorCode.h"
+#include "vtkFieldData.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <geo_normalize.h>
+#include <geotiff.h>
+#include <geovalues.h>
+#include <tiffio.h>
+#include <xtiffio.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdarg>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <limits>
+#include <mutex>
+#include <new>
+#include <sstream>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkGlobeRasterReader);
+
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+// GDAL writes the nodata value as ASCII in this private tag; libtiff does not know it.
+constexpr ttag_t GDALNoDataTag = 42113;
+
+//------------------------------------------------------------------------------------------
+// libtiff set-up: the GeoTIFF tags (XTIFFInitialize) and GDAL_NODATA are registered through
+// tag extenders, which libtiff keeps globally; install them once, chained to any previous one.
+TIFFExtendProc PreviousExtender = nullptr;
+
+void GDALTagExtender(TIFF* tif)
+{
+  static const TIFFFieldInfo info[] = { { GDALNoDataTag, -1, -1, TIFF_ASCII, FIELD_CUSTOM, 1, 0,
+    const_cast<char*>("GDAL_NODATA") } };
+  TIFFMergeFieldInfo(tif, info, 1);
+  if (PreviousExtender)
+  {
+    PreviousExtender(tif);
+  }
+}
+
+void RegisterTIFFTags()
+{
+  static std::once_flag once;
+  std::call_once(once,
+    []
+    {
+      XTIFFInitialize();
+      PreviousExtender = TIFFSetTagExtender(GDALTagExtender);
+    });
+}
+
+#if defined(TIFFLIB_VERSION) && TIFFLIB_VERSION >= 20221213
+// libtiff >= 4.5: per-handle handlers, so messages reach our error text instead of stderr.
+int CollectTIFFError(TIFF*, void* userData, const char*, const char* format, va_list args)
+{
+  char buffer[512];
+  std::vsnprintf(buffer, sizeof(buffer), format, args);
+  auto* text = static_cast<std::string*>(userData);
+  if (text->empty())
+  {
+    *text = buffer; // the first error is the cause; later ones are consequences
+  }
+  return 1;
+}
+
+int IgnoreTIFFWarning(TIFF*, void*, const char*, const char*, va_list)
+{
+  return 1; // e.g. GDAL_METADATA (42112), unknown to libtiff and of no use here
+}
+
+TIFF* OpenTIFF(const std::string& fileName, std::string* errorText)
+{
+  TIFFOpenOptions* options = TIFFOpenOptionsAlloc();
+  TIFFOpenOptionsSetErrorHandlerExtR(options, CollectTIFFError, errorText);
+  TIFFOpenOptionsSetWarningHandlerExtR(options, IgnoreTIFFWarning, nullptr);
+  TIFF* tif = TIFFOpenExt(fileName.c_str(), "r", options);
+  TIFFOpenOptionsFree(options);
+  return tif;
+}
+#else
+TIFF* OpenTIFF(const std::string& fileName, std::string*)
+{
+  return TIFFOpen(fileName.c_str(), "r");
+}
+#endif
+
+/// Parses a number as C does in the "C" locale ("-32768", "nan", "1e+38"), whole text only.
+bool ParseNumber(std::string s, double& value)
+{
+  const auto notSpace = [](unsigned char c) { return !std::isspace(c); };
+  s.erase(s.begin(), std::find_if(s.begin(), s.end(), notSpace));
+  s.erase(std::find_if(s.rbegin(), s.rend(), notSpace).base(), s.end());
+  if (!s.empty() && s[0] == '+')
+  {
+    s.erase(0, 1);
+  }
+  const auto result = std::from_chars(s.data(), s.data() + s.size(), value);
+  return !s.empty() && result.ec == std::errc() && result.ptr == s.data() + s.size();
+}
+
+/// Degrees per unit of a GeogAngularUnitsGeoKey code; 0 when unsupported.
+double DegreesPerAngularUnit(int code)
+{
+  switch (code)
+  {
+    case Angular_Radian:
+      return 180.0 / Pi;
+    case Angular_Degree:
+      return 1.0;
+    case Angular_Arc_Minute:
+      return 1.0 / 60.0;
+    case Angular_Arc_Second:
+      return 1.0 / 3600.0;
+    case Angular_Grad:
+    case Angular_Gon:
+      return 0.9;
+    default:
+      return 0.0;
+  }
+}
+
+/// The name of an EPSG length unit ("metre", "foot", ...) from PROJ's database; "" if unknown.
+std::string LengthUnitName(int code)
+{
+  char* name = nullptr;
+  double metres = 0.0;
+  std::string result;
+  if (code > 0 && GTIFGetUOMLengthInfo(code, &name, &metres) && name)
+  {
+    result = name;
+  }
+  if (name)
+  {
+    GTIFFreeMemory(name);
+  }
+  return result;
+}
+
+/// What an EPSG code is according to PROJ's database (through libgeotiff).
+struct EPSGClass
+{
+  int ModelType = 0; // 0: unknown to the database
+  std::string Name;
+  std::string Units;
+};
+
+/// Looks `code` up, trying `expected` first (a lookup that misses can print a PROJ message).
+EPSGClass ClassifyEPSG(int code, int expected)
+{
+  EPSGClass result;
+  const auto geographic = [&]()
+  {
+    char* name = nullptr;
+    short datum = 0, meridian = 0, angular = 0;
+    if (GTIFGetGCSInfo(code, &name, &datum, &meridian, &angular))
+    {
+      result.ModelType = vtkGlobeRasterReader::Geographic;
+      result.Name = name ? name : "";
+      result.Units = "degree";
+    }
+    if (name)
+    {
+      GTIFFreeMemory(name);
+    }
+    return result.ModelType != 0;
+  };
+  const auto projected = [&]()
+  {
+    char* name = nullptr;
+    short operation = 0, length = 0, gcs = 0;
+    if (GTIFGetPCSInfo(code, &name, &operation, &length, &gcs))
+    {
+      result.ModelType = vtkGlobeRasterReader::Projected;
+      result.Name = name ? name : "";
+      result.Units = LengthUnitName(length);
+    }
+    if (name)
+    {
+      GTIFFreeMemory(name);
+    }
+    return result.ModelType != 0;
+  };
+  if (code <= 0 || code >= KvUserDefined)
+  {
+    return result;
+  }
+  if (expected == vtkGlobeRasterReader::Projected)
+  {
+    projected() || geographic();
+  }
+  else
+  {
+    geographic() || projected();
+  }
+  return result;
+}
+
+const char* ModelTypeName(int type)
+{
+  return type == vtkGlobeRasterReader::Geographic
+    ? "geographic"
+    : (type == vtkGlobeRasterReader::Projected ? "projected" : "unknown");
+}
+
+/// The georeferencing of a raster, from whichever source.
+struct Georeference
+{
+  int ModelType = 0;
+  int EPSG = 0;
+  // GDAL-style affine transform: x = t0 + col t1 + row t2, y = t3 + col t4 + row t5, in the
+  // model's units (degrees for Geographic), for the outer corner of pixel (0, 0) of the file.
+  double T[6] = { 0, 0, 0, 0, 0, 0 };
+  double SemiMajor = 0.0;
+  double SemiMinor = 0.0;
+  std::string Units;
+  std::string Source;
+};
+
+/// What libtiff and libgeotiff tell about a file.
+struct TIFFInfo
+{
+  bool IsTIFF = false;
+  std::string NotTIFFReason;
+  bool HasGeoreference = false;
+  Georeference Geo;
+  bool HasNoData = false;
+  double NoData = 0.0;
+  bool NoDataUnparsed = false;
+  int Width = 0;
+  int Height = 0;
+};
+
+/// Checks a transform: finite, not rotated or sheared, non-zero pixel size.
+bool CheckTransform(const double t[6], const std::string& what, std::string& why)
+{
+  for (int i = 0; i < 6; ++i)
+  {
+    if (!std::isfinite(t[i]))
+    {
+      why = "its " + what + " is not finite";
+      return false;
+    }
+  }
+  if (t[2] != 0.0 || t[4] != 0.0)
+  {
+    why = "it is rotated or sheared (" + what + " with off-diagonal terms), which is not supported";
+    return false;
+  }
+  if (t[1] == 0.0 || t[5] == 0.0)
+  {
+    why = "its pixel size is zero (" + what + ")";
+    return false;
+  }
+  return true;
+}
+
+/**
+ * Reads the GeoTIFF georeferencing and the nodata tag. A file that is not a TIFF, or a TIFF
+ * without georeferencing tags, is not an error here (a world file may georeference it); false
+ * with the reason in `why` for georeferencing that is present but unusable or contradictory.
+ */
+bool ReadGeoTIFF(const std::string& fileName, TIFFInfo& info, std::string& why)
+{
+  RegisterTIFFTags();
+  std::string tiffError;
+  TIFF* tif = OpenTIFF(fileName, &tiffError);
+  if (!tif)
+  {
+    info.NotTIFFReason = "it is not a TIFF file, so it has no GeoTIFF georeferencing";
+    if (!tiffError.empty())
+    {
+      info.NotTIFFReason += " (libtiff: " + tiffError + ")";
+    }
+    return true;
+  }
+  info.IsTIFF = true;
+  // Closes the handles on every return path.
+  struct Closer
+  {
+    TIFF* Tif;
+    GTIF* Gtif = nullptr;
+    ~Closer()
+    {
+      if (this->Gtif)
+      {
+        GTIFFree(this->Gtif);
+      }
+      XTIFFClose(this->Tif);
+    }
+  } closer{ tif };
+
+  uint32_t w = 0, h = 0;
+  TIFFGetField(tif, TIFFTAG_IMAGEWIDTH, &w);
+  TIFFGetField(tif, TIFFTAG_IMAGELENGTH, &h);
+  info.Width = static_cast<int>(std::min<uint32_t>(w, std::numeric_limits<int>::max()));
+  info.Height = static_cast<int>(std::min<uint32_t>(h, std::numeric_limits<int>::max()));
+
+  char* noDataText = nullptr;
+  if (TIFFGetField(tif, GDALNoDataTag, &noDataText) && noDataText)
+  {
+    info.HasNoData = ParseNumber(noDataText, info.NoData);
+    info.NoDataUnparsed = !info.HasNoData;
+  }
+
+  // The raster -> model transform, from the tie point and pixel scale or from the matrix.
+  uint16_t count = 0;
+  double* values = nullptr;
+  double* tie = nullptr;
+  uint16_t tieCount = 0;
+  if (TIFFGetField(tif, TIFFTAG_GEOTIEPOINTS, &tieCount, &values) && tieCount >= 6)
+  {
+    tie = values;
+  }
+  double* scale = nullptr;
+  if (TIFFGetField(tif, TIFFTAG_GEOPIXELSCALE, &count, &values) && count >= 2)
+  {
+    scale = values;
+  }
+  double* matrix = nullptr;
+  if (TIFFGetField(tif, TIFFTAG_GEOTRANSMATRIX, &count, &values) && count >= 16)
+  {
+    matrix = values;
+  }
+  Georeference& geo = info.Geo;
+  double* t = geo.T;
+  if (tie && scale)
+  {
+    t[0] = tie[3] - tie[0] * scale[0];
+    t[1] = scale[0];
+    t[2] = 0.0;
+    t[3] = tie[4] + tie[1] * scale[1];
+    t[4] = 0.0;
+    t[5] = -scale[1];
+  }
+  else if (matrix)
+  {
+    t[0] = matrix[3];
+    t[1] = matrix[0];
+    t[2] = matrix[1];
+    t[3] = matrix[7];
+    t[4] = matrix[4];
+    t[5] = matrix[5];
+  }
+  else if (tie)
+  {
+    why = "its GeoTIFF georeferencing is ground control points only (no ModelPixelScale or "
+          "ModelTransformation tag), which is not supported";
+    return false;
+  }
+  else
+  {
+    return true; // no GeoTIFF georeferencing: perhaps a world file
+  }
+
+  closer.Gtif = GTIFNew(tif);
+  GTIF* gtif = closer.Gtif;
+  if (!gtif)
+  {
+    why = "its GeoTIFF keys cannot be read";
+    return false;
+  }
+  unsigned short code = 0;
+  if (GTIFKeyGet(gtif, GTModelTypeGeoKey, &code, 0, 1) != 1)
+  {
+    why = "it has no GTModelTypeGeoKey, so it is not known whether it is geographic or "
+          "projected";
+    return false;
+  }
+  if (code == ModelTypeGeographic)
+  {
+    geo.ModelType = vtkGlobeRasterReader::Geographic;
+  }
+  else if (code == ModelTypeProjected)
+  {
+    geo.ModelType = vtkGlobeRasterReader::Projected;
+  }
+  else
+  {
+    why = "its model type (GTModelTypeGeoKey = " + std::to_string(code) +
+      ") is neither geographic nor projected";
+    return false;
+  }
+  bool pixelIsPoint = false;
+  if (GTIFKeyGet(gtif, GTRasterTypeGeoKey, &code, 0, 1) == 1)
+  {
+    pixelIsPoint = (code == RasterPixelIsPoint);
+  }
+  const bool geographic = geo.ModelType == vtkGlobeRasterReader::Geographic;
+  if (GTIFKeyGet(gtif, geographic ? GeographicTypeGeoKey : ProjectedCSTypeGeoKey, &code, 0, 1) ==
+      1 &&
+    code != KvUserDefined)
+  {
+    geo.EPSG = code;
+  }
+  // A projected CRS key in a geographic file contradicts its model type.
+  if (geographic && GTIFKeyGet(gtif, ProjectedCSTypeGeoKey, &code, 0, 1) == 1 &&
+    code != KvUserDefined)
+  {
+    why = "its georeferencing is contradictory: GTModelTypeGeoKey says geographic, but it has a "
+          "projected CRS (ProjectedCSTypeGeoKey = EPSG:" +
+      std::to_string(code) + ")";
+    return false;
+  }
+  if (!geographic && GTIFKeyGet(gtif, ProjLinearUnitsGeoKey, &code, 0, 1) == 1)
+  {
+    geo.Units = LengthUnitName(code);
+  }
+
+  // The datum's ellipsoid, only when the file spells it out (a user-defined body).
+  double a = 0.0, b = 0.0, inverseFlattening = 0.0;
+  if (GTIFKeyGet(gtif, GeogSemiMajorAxisGeoKey, &a, 0, 1) == 1 && a > 0.0)
+  {
+    geo.SemiMajor = a;
+    if (GTIFKeyGet(gtif, GeogSemiMinorAxisGeoKey, &b, 0, 1) == 1 && b > 0.0)
+    {
+      geo.SemiMinor = b;
+    }
+    else if (GTIFKeyGet(gtif, GeogInvFlatteningGeoKey, &inverseFlattening, 0, 1) == 1)
+    {
+      // An inverse flattening of 0 denotes a sphere.
+      geo.SemiMinor = inverseFlattening != 0.0 ? a * (1.0 - 1.0 / inverseFlattening) : a;
+    }
+  }
+
+  if (geographic)
+  {
+    // Geographic coordinates are in GeogAngularUnits (degrees unless said otherwise).
+    double degrees = 1.0;
+    double unitSize = 0.0; // radians per unit
+    const bool hasSize = GTIFKeyGet(gtif, GeogAngularUnitSizeGeoKey, &unitSize, 0, 1) == 1;
+    if (GTIFKeyGet(gtif, GeogAngularUnitsGeoKey, &code, 0, 1) == 1 && code != KvUserDefined)
+    {
+      degrees = DegreesPerAngularUnit(code);
+      if (degrees == 0.0)
+      {
+        why = "its angular unit (GeogAngularUnitsGeoKey = " + std::to_string(code) +
+          ") is not supported";
+        return false;
+      }
+    }
+    else if (hasSize && unitSize > 0.0)
+    {
+      degrees = unitSize * 180.0 / Pi;
+    }
+    for (double& v : geo.T)
+    {
+      v *= degrees;
+    }
+  }
+  if (pixelIsPoint)
+  {
+    // The transform is for pixel centres: move it to the outer pixel corner.
+    t[0] -= 0.5 * (t[1] + t[2]);
+    t[3] -= 0.5 * (t[4] + t[5]);
+  }
+  if (!CheckTransform(t, "ModelTransformation", why))
+  {
+    return false;
+  }
+  geo.Source = "GeoTIFF";
+  info.HasGeoreference = true;
+  return true;
+}
+
+//------------------------------------------------------------------------------------------
+// World files and .prj files.
+
+/// An existing file next to `image` with one of the extensions, tried as given, in lower and
+/// in upper case; "" if none.
+std::string FindSidecar(const std::filesystem::path& image, const std::vector<std::string>& exts)
+{
+  for (const std::string& ext : exts)
+  {
+    std::string lower = ext, upper = ext;
+    std::transform(lower.begin(), lower.end(), lower.begin(), ::tolower);
+    std::transform(upper.begin(), upper.end(), upper.begin(), ::toupper);
+    for (const std::string& e : { ext, lower, upper })
+    {
+      std::filesystem::path candidate = image;
+      candidate.replace_extension(e);
+      std::error_code ec;
+      if (std::filesystem::is_regular_file(candidate, ec))
+      {
+        return candidate.string();
+      }
+    }
+  }
+  return std::string();
+}
+
+/// The world-file names of an image: .tfw and .tifw for .tif, .pgw and .pngw for .png, ...
+std::vector<std::string> WorldFileExtensions(const std::filesystem::path& image)
+{
+  std::string ext = image.extension().string();
+  std::vector<std::string> exts;
+  if (ext.size() >= 3) // ".ab" at least
+  {
+    exts.push_back(std::string(".") + ext[1] + ext.back() + "w");
+    exts.push_back(ext + "w");
+  }
+  exts.push_back(".wld");
+  return exts;
+}
+
+bool ReadText(const std::string& path, std::string& text)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+  {
+    return false;
+  }
+  std::ostringstream s;
+  s << in.rdbuf();
+  text = s.str();
+  return true;
+}
+
+/// Six numbers A D B E C F: x = A col + B row + C, y = D col + E row + F at pixel centres.
+bool ReadWorldFile(const std::string& path, double t[6], std::string& why)
+{
+  std::string text;
+  if (!ReadText(path, text))
+  {
+    why = "its world file '" + path + "' cannot be read";
+    return false;
+  }
+  std::istringstream in(text);
+  std::string token;
+  double v[6];
+  int n = 0;
+  while (n < 6 && in >> token)
+  {
+    if (!ParseNumber(token, v[n]))
+    {
+      break;
+    }
+    ++n;
+  }
+  if (n < 6)
+  {
+    why = "its world file '" + path + "' does not hold six numbers";
+    return false;
+  }
+  // To the GDAL order, at the outer corner of pixel (0, 0).
+  t[1] = v[0];
+  t[4] = v[1];
+  t[2] = v[2];
+  t[5] = v[3];
+  t[0] = v[4] - 0.5 * (v[0] + v[2]);
+  t[3] = v[5] - 0.5 * (v[1] + v[3]);
+  return CheckTransform(t, "world file '" + path + "'", why);
+}
+
+/// What a .prj file's WKT says: its top-level keyword, EPSG authority, unit and ellipsoid.
+struct WKTInfo
+{
+  std::string Keyword;
+  int EPSG = 0;
+  std::string UnitName;
+  double UnitFactor = 0.0;
+  double SemiMajor = 0.0;
+  double InverseFlattening = -1.0;
+};
+
+/// A small WKT (1 or 2) scanner: nodes KEYWORD[arg, arg, ...] with quoted strings; '(' and ')'
+/// are accepted as brackets. Only the nodes the reader needs are looked at.
+WKTInfo ParseWKT(const std::string& text)
+{
+  WKTInfo info;
+  struct Node
+  {
+    std::string Keyword;
+    std::vector<std::string> Args;
+  };
+  std::vector<Node> stack;
+  std::string token;
+  bool quoted = false;
+  const auto flush = [&]()
+  {
+    if (!stack.empty())
+    {
+      stack.back().Args.push_back(token);
+    }
+    token.clear();
+  };
+  const auto close = [&](const Node& node, size_t depth)
+  {
+    std::string key = node.Keyword;
+    std::transform(key.begin(), key.end(), key.begin(), ::toupper);
+    const auto arg = [&node](size_t i) { return i < node.Args.size() ? node.Args[i] : ""; };
+    double number = 0.0;
+    if (depth == 1 && (key == "AUTHORITY" || key == "ID"))
+    {
+      std::string authority = arg(0);
+      std::transform(authority.begin(), authority.end(), authority.begin(), ::toupper);
+      if (authority == "EPSG" && ParseNumber(arg(1), number) && number > 0)
+      {
+        info.EPSG = static_cast<int>(number);
+      }
+    }
+    else if (depth == 1 &&
+      (key == "UNIT" || key == "ANGLEUNIT" || key == "LENGTHUNIT") && info.UnitName.empty())
+    {
+      info.UnitName = arg(0);
+      ParseNumber(arg(1), info.UnitFactor);
+    }
+    else if ((key == "SPHEROID" || key == "ELLIPSOID") && ParseNumber(arg(1), number))
+    {
+      info.SemiMajor = number;
+      if (!ParseNumber(arg(2), info.InverseFlattening))
+      {
+        info.InverseFlattening = -1.0;
+      }
+    }
+  };
+  for (char c : text)
+  {
+    if (quoted)
+    {
+      if (c == '"')
+      {
+        quoted = false;
+      }
+      else
+      {
+        token += c;
+      }
+      continue;
+    }
+    if (c == '"')
+    {
+      quoted = true;
+    }
+    else if (c == '[' || c == '(')
+    {
+      const auto notSpace = [](unsigned char ch) { return !std::isspace(ch); };
+      token.erase(token.begin(), std::find_if(token.begin(), token.end(), notSpace));
+      token.erase(std::find_if(token.rbegin(), token.rend(), notSpace).base(), token.end());
+      if (stack.empty() && info.Keyword.empty())
+      {
+        info.Keyword = token;
+        std::transform(
+          info.Keyword.begin(), info.Keyword.end(), info.Keyword.begin(), ::toupper);
+      }
+      stack.push_back(Node{ token, {} });
+      token.clear();
+    }
+    else if (c == ',' && !stack.empty())
+    {
+      flush();
+    }
+    else if ((c == ']' || c == ')') && !stack.empty())
+    {
+      flush();
+      const Node node = stack.back();
+      stack.pop_back();
+      // A child node leaves an empty argument in its parent: drop it.
+      if (!stack.empty() && !stack.back().Args.empty() && stack.back().Args.back().empty())
+      {
+        stack.back().Args.pop_back();
+      }
+      close(node, stack.size());
+    }
+    else if (!std::isspace(static_cast<unsigned char>(c)) || !token.empty())
+    {
+      token += c;
+    }
+  }
+  return info;
+}
+
+/// Model type of a WKT top-level keyword; 0 for anything else (geocentric, compound...).
+int WKTModelType(const std::string& keyword)
+{
+  if (keyword == "GEOGCS" || keyword == "GEOGCRS" || keyword == "GEOGRAPHICCRS" ||
+    (keyword == "GEODCRS"))
+  {
+    return vtkGlobeRasterReader::Geographic;
+  }
+  if (keyword == "PROJCS" || keyword == "PROJCRS" || keyword == "PROJECTEDCRS")
+  {
+    return vtkGlobeRasterReader::Projected;
+  }
+  return 0;
+}
+
+std::string FormatTransform(const double t[6])
+{
+  char text[160];
+  std::snprintf(text, sizeof(text), "corner (%.10g, %.10g), pixel %.10g x %.10g", t[0], t[3],
+    t[1], t[5]);
+  return text;
+}
+
+/// True when two outer-corner transforms describe the same grid (world files are written with
+/// ~10 significant digits: allow 1e-6 of a pixel on the corner, 1e-9 relative on the size).
+bool SameGrid(const double a[6], const double b[6])
+{
+  const double px = std::abs(a[1]), py = std::abs(a[5]);
+  return std::abs(a[1] - b[1]) <= 1e-9 * px && std::abs(a[5] - b[5]) <= 1e-9 * py &&
+    std::abs(a[0] - b[0]) <= 1e-6 * px && std::abs(a[3] - b[3]) <= 1e-6 * py;
+}
+
+/// The pixel-edge box of a north-up transform: west, east, south, north.
+void BoxOf(const double t[6], int width, int height, double box[4])
+{
+  box[0] = t[0];
+  box[1] = t[0] + width * t[1];
+  box[2] = t[3] + height * t[5];
+  box[3] = t[3];
+}
+
+/// Points-registered global grids reach half a pixel beyond the poles and the date line; more
+/// than a pixel means the coordinates are not degrees.
+bool FitsDegrees(const double box[4], double dx, double dy)
+{
+  return box[2] >= -90.0 - dy && box[3] <= 90.0 + dy && box[1] - box[0] <= 360.0 + dx &&
+    box[0] >= -360.0 - dx && box[1] <= 360.0 + dx;
+}
+
+std::string BoxText(const double box[4])
+{
+  char text[200];
+  std::snprintf(text, sizeof(text), "(west %g, east %g, south %g, north %g)", box[0], box[1],
+    box[2], box[3]);
+  return text;
+}
+
+/// The VTK scalar type a 1-channel raster of `format` is read as; 0 when unsupported.
+int ScalarTypeOf(OIIO::TypeDesc format)
+{
+  switch (format.basetype)
+  {
+    case OIIO::TypeDesc::UINT8:
+      return VTK_UNSIGNED_CHAR;
+    case OIIO::TypeDesc::INT8:
+      return VTK_SIGNED_CHAR;
+    case OIIO::TypeDesc::UINT16:
+      return VTK_UNSIGNED_SHORT;
+    case OIIO::TypeDesc::INT16:
+      return VTK_SHORT;
+    case OIIO::TypeDesc::UINT32:
+      return VTK_UNSIGNED_INT;
+    case OIIO::TypeDesc::INT32:
+      return VTK_INT;
+    case OIIO::TypeDesc::HALF: // widened exactly, never rescaled
+    case OIIO::TypeDesc::FLOAT:
+      return VTK_FLOAT;
+    case OIIO::TypeDesc::DOUBLE:
+      return VTK_DOUBLE;
+    default:
+      return 0;
+  }
+}
+
+OIIO::TypeDesc ReadTypeOf(int scalarType)
+{
+  switch (scalarType)
+  {
+    case VTK_UNSIGNED_CHAR:
+      return OIIO::TypeDesc::UINT8;
+    case VTK_SIGNED_CHAR:
+      return OIIO::TypeDesc::INT8;
+    case VTK_UNSIGNED_SHORT:
+      return OIIO::TypeDesc::UINT16;
+    case VTK_SHORT:
+      return OIIO::TypeDesc::INT16;
+    case VTK_UNSIGNED_INT:
+      return OIIO::TypeDesc::UINT32;
+    case VTK_INT:
+      return OIIO::TypeDesc::INT32;
+    case VTK_FLOAT:
+      return OIIO::TypeDesc::FLOAT;
+    default:
+      return OIIO::TypeDesc::DOUBLE;
+  }
+}
+
+/// Opens an image for reading pixels; straight alpha is kept as stored (OpenImageIO would
+/// premultiply unassociated alpha by default).
+std::unique_ptr<OIIO::ImageInput> OpenImage(const std::string& file)
+{
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  return OIIO::ImageInput::open(file, &config);
+}
+} // namespace
+
+//------------------------------------------------------------------------------------------
+class vtkGlobeRasterReader::vtkInternals
+{
+public:
+  // What RequestInformation found (for File); RequestData reads pixels with it.
+  std::string File;
+  int Width = 0;
+  int Height = 0;
+  int Channels = 0;
+  int ScalarType = 0;
+  int TileHeight = 0; // 0: scanline file
+  int FirstX = 0;     // OpenImageIO's data window origin
+  int FirstY = 0;
+  bool FlipRows = false; // file row 0 is the north row (the usual case): VTK row 0 is south
+  bool FlipColumns = false;
+  Georeference Geo; // T normalised: north-west corner, t1 > 0, t5 < 0
+  bool HasNoData = false;
+  double NoData = 0.0;
+  std::string LastError;
+};
+
+//------------------------------------------------------------------------------------------
+vtkGlobeRasterReader::vtkGlobeRasterReader()
+  : Internals(new vtkInternals)
+{
+  this->SetNumberOfInputPorts(0);
+  this->SetNumberOfOutputPorts(1);
+}
+
+vtkGlobeRasterReader::~vtkGlobeRasterReader()
+{
+  this->SetFileName(nullptr);
+}
+
+const char* vtkGlobeRasterReader::GetLastError()
+{
+  return this->Internals->LastError.c_str();
+}
+
+int vtkGlobeRasterReader::Fail(unsigned long errorCode, const std::string& why)
+{
+  this->Internals->LastError = why;
+  this->Internals->File.clear(); // the header information is not valid
+  this->SetErrorCode(errorCode);
+  vtkErrorMacro(<< "Cannot read '" << (this->FileName ? this->FileName : "") << "': " << why);
+  return 0;
+}
+
+//------------------------------------------------------------------------------------------
+int vtkGlobeRasterReader::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInternals& in = *this->Internals;
+  in.LastError.clear();
+  in.File.clear();
+  this->SetErrorCode(vtkErrorCode::NoError);
+  if (!this->FileName || !*this->FileName)
+  {
+    in.LastError = "no FileName is set";
+    this->SetErrorCode(vtkErrorCode::NoFileNameError);
+    vtkErrorMacro(<< "Cannot read: no FileName is set");
+    return 0;
+  }
+  const std::string file = this->FileName;
+  // On failure, no stale output from an earlier success stays downstream.
+  struct ClearOnFailure
+  {
+    vtkInternals& In;
+    vtkImageData* Output;
+    ~ClearOnFailure()
+    {
+      if (this->In.File.empty() && this->Output)
+      {
+        this->Output->Initialize();
+      }
+    }
+  } clear{ in, vtkImageData::GetData(outputVector) };
+  try
+  {
+    std::error_code ec;
+    if (!std::filesystem::exists(file, ec))
+    {
+      return this->Fail(vtkErrorCode::FileNotFoundError, "the file does not exist");
+    }
+    if (!std::filesystem::is_regular_file(file, ec))
+    {
+      return this->Fail(vtkErrorCode::CannotOpenFileError, "it is not a regular file");
+    }
+
+    // The image header (no pixels).
+    auto input = OpenImage(file);
+    if (!input)
+    {
+      return this->Fail(vtkErrorCode::UnrecognizedFileTypeError,
+        "it cannot be opened as an image: not an image file, or corrupt or truncated "
+        "(OpenImageIO: " +
+          OIIO::geterror() + ")");
+    }
+    const OIIO::ImageSpec& spec = input->spec();
+    const int width = spec.width, height = spec.height, channels = spec.nchannels;
+    if (width <= 0 || height <= 0 || spec.depth > 1 || spec.deep || channels <= 0)
+    {
+      return this->Fail(vtkErrorCode::FileFormatError,
+        "its raster size (" + std::to_string(width) + " x " + std::to_string(height) + " x " +
+          std::to_string(channels) + ") is not a plain 2D image");
+    }
+    int scalarType = VTK_UNSIGNED_CHAR;
+    if (channels == 1)
+    {
+      // Integer rasters in their native type: OpenImageIO's float conversion would
+      // normalise them to [-1, 1].
+      scalarType = ScalarTypeOf(spec.format);
+      if (scalarType == 0)
+      {
+        return this->Fail(vtkErrorCode::FileFormatError,
+          "its sample type (" + std::string(spec.format.c_str()) + ") is not supported");
+      }
+    }
+    in.TileHeight = spec.tile_width > 0 ? std::max(spec.tile_height, 1) : 0;
+    in.FirstX = spec.x;
+    in.FirstY = spec.y;
+    input->close();
+
+    // Georeferencing: GeoTIFF tags, a world file, a .prj file, SetEPSG.
+    TIFFInfo tiff;
+    std::string why;
+    if (!ReadGeoTIFF(file, tiff, why))
+    {
+      return this->Fail(vtkErrorCode::FileFormatError, why);
+    }
+    if (tiff.IsTIFF && (tiff.Width != width || tiff.Height != height))
+    {
+      return this->Fail(vtkErrorCode::FileFormatError, "libtiff and OpenImageIO disagree on its size");
+    }
+    if (tiff.NoDataUnparsed)
+    {
+      vtkWarningMacro(<< "'" << file << "': the GDAL_NODATA tag is not a number; ignored");
+    }
+    const std::filesystem::path path(file);
+    const std::vector<std::string> worldExts = WorldFileExtensions(path);
+    const std::string world = FindSidecar(path, worldExts);
+    Georeference geo;
+    if (!world.empty())
+    {
+      if (!ReadWorldFile(world, geo.T, why))
+      {
+        return this->Fail(vtkErrorCode::FileFormatError, why);
+      }
+      if (tiff.HasGeoreference && !SameGrid(geo.T, tiff.Geo.T))
+      {
+        return this->Fail(vtkErrorCode::FileFormatError,
+          "its georeferencing is contradictory: the world file '" + world + "' gives " +
+            FormatTransform(geo.T) + ", its GeoTIFF tags give " + FormatTransform(tiff.Geo.T));
+      }
+    }
+    if (tiff.HasGeoreference)
+    {
+      geo = tiff.Geo; // the tags are exact; an agreeing world file adds nothing
+    }
+    else if (world.empty())
+    {
+      std::string list;
+      for (const std::string& e : worldExts)
+      {
+        list += (list.empty() ? "" : ", ") + e;
+      }
+      return this->Fail(vtkErrorCode::FileFormatError,
+        (tiff.IsTIFF ? std::string("it has no GeoTIFF georeferencing (no ModelTiepoint + "
+                                   "ModelPixelScale or ModelTransformation tag)")
+                     : tiff.NotTIFFReason) +
+          ", and no world file (" + list + ") next to it");
+    }
+
+    // The projection of a world file: .prj, SetEPSG, or WGS 84 if the numbers are degrees.
+    const std::string prj = FindSidecar(path, { ".prj" });
+    if (tiff.HasGeoreference && !prj.empty() && geo.EPSG != 0)
+    {
+      std::string text;
+      const WKTInfo wkt = ReadText(prj, text) ? ParseWKT(text) : WKTInfo();
+      if (wkt.EPSG != 0 && wkt.EPSG != geo.EPSG)
+      {
+        return this->Fail(vtkErrorCode::FileFormatError,
+          "its georeferencing is contradictory: its projection file '" + prj + "' says EPSG:" +
+            std::to_string(wkt.EPSG) + ", its GeoTIFF tags say EPSG:" + std::to_string(geo.EPSG));
+      }
+    }
+    if (!tiff.HasGeoreference)
+    {
+      if (!prj.empty())
+      {
+        std::string text;
+        if (!ReadText(prj, text))
+        {
+          return this->Fail(vtkErrorCode::CannotOpenFileError,
+            "its projection file '" + prj + "' cannot be read");
+        }
+        const WKTInfo wkt = ParseWKT(text);
+        geo.ModelType = WKTModelType(wkt.Keyword);
+        if (geo.ModelType == 0)
+        {
+          return this->Fail(vtkErrorCode::FileFormatError,
+            "its projection file '" + prj + "' is not a geographic or projected WKT CRS (" +
+              (wkt.Keyword.empty() ? std::string("no WKT keyword") : wkt.Keyword) + ")");
+        }
+        geo.EPSG = wkt.EPSG;
+        if (geo.EPSG == 0 && this->EPSG == 0 && geo.ModelType == Projected)
+        {
+          return this->Fail(vtkErrorCode::FileFormatError,
+            "its projection file '" + prj +
+              "' names no EPSG authority for its projected CRS; give the code with SetEPSG");
+        }
+        if (geo.ModelType == Geographic && wkt.UnitFactor > 0.0)
+        {
+          // Angular unit in radians per unit.
+          const double degrees = wkt.UnitFactor * 180.0 / Pi;
+          if (std::abs(degrees - 1.0) > 1e-9)
+          {
+            for (double& v : geo.T)
+            {
+              v *= degrees;
+            }
+          }
+        }
+        geo.Units = geo.ModelType == Geographic ? "degree" : wkt.UnitName;
+        if (wkt.SemiMajor > 0.0)
+        {
+          geo.SemiMajor = wkt.SemiMajor;
+          geo.SemiMinor = wkt.InverseFlattening > 0.0
+            ? wkt.SemiMajor * (1.0 - 1.0 / wkt.InverseFlattening)
+            : wkt.SemiMajor;
+        }
+        geo.Source = "world file + .prj";
+      }
+      else if (this->EPSG != 0)
+      {
+        geo.Source = "world file + SetEPSG";
+      }
+      else
+      {
+        double box[4], t[6];
+        std::copy(geo.T, geo.T + 6, t);
+        if (t[5] > 0.0)
+        {
+          t[3] += height * t[5];
+          t[5] = -t[5];
+        }
+        BoxOf(t, width, height, box);
+        if (t[1] < 0.0)
+        {
+          std::swap(box[0], box[1]);
+        }
+        if (!FitsDegrees(box, std::abs(t[1]), -t[5]))
+        {
+          return this->Fail(vtkErrorCode::FileFormatError,
+            "its world file '" + world + "' has no projection (no .prj file, no SetEPSG) and its "
+                                         "coordinates " +
+              BoxText(box) + " are not degrees, so they cannot be taken as WGS 84");
+        }
+        geo.ModelType = Geographic;
+        geo.EPSG = 4326;
+        geo.Source = "world file, assumed WGS 84";
+      }
+    }
+
+    // EPSG codes: the caller's must agree with the file's, and the model type with the code.
+    if (this->EPSG != 0)
+    {
+      if (this->EPSG < 0)
+      {
+        return this->Fail(vtkErrorCode::UserError,
+          "SetEPSG(" + std::to_string(this->EPSG) + ") is not an EPSG code");
+      }
+      if (geo.EPSG != 0 && geo.EPSG != this->EPSG)
+      {
+        return this->Fail(vtkErrorCode::FileFormatError,
+          "its georeferencing is contradictory: the file says EPSG:" + std::to_string(geo.EPSG) +
+            " (" + geo.Source + "), SetEPSG says EPSG:" + std::to_string(this->EPSG));
+      }
+      geo.EPSG = this->EPSG;
+    }
+    if (geo.EPSG != 0)
+    {
+      const EPSGClass crs = ClassifyEPSG(geo.EPSG, geo.ModelType);
+      if (crs.ModelType == 0 && geo.ModelType == 0)
+      {
+        return this->Fail(vtkErrorCode::UserError,
+          "EPSG:" + std::to_string(geo.EPSG) +
+            " is neither a geographic nor a projected CRS in PROJ's database");
+      }
+      if (crs.ModelType != 0 && geo.ModelType != 0 && crs.ModelType != geo.ModelType)
+      {
+        return this->Fail(vtkErrorCode::FileFormatError,
+          std::string("its georeferencing is contradictory: the model type is ") +
+            ModelTypeName(geo.ModelType) + " (" + geo.Source + "), but EPSG:" +
+            std::to_string(geo.EPSG) + " (" + crs.Name + ") is a " +
+            ModelTypeName(crs.ModelType) + " CRS");
+      }
+      if (geo.ModelType == 0)
+      {
+        geo.ModelType = crs.ModelType;
+      }
+      if (geo.Units.empty())
+      {
+        geo.Units = crs.Units;
+      }
+    }
+    if (geo.ModelType == Geographic)
+    {
+      geo.Units = "degree";
+    }
+    if (geo.Units.empty())
+    {
+      geo.Units = "unknown";
+    }
+
+    // North-up, west-to-east.
+    double* t = geo.T;
+    in.FlipRows = t[5] < 0.0;
+    if (t[5] > 0.0)
+    {
+      t[3] += height * t[5];
+      t[5] = -t[5];
+    }
+    in.FlipColumns = t[1] < 0.0;
+    if (t[1] < 0.0)
+    {
+      t[0] += width * t[1];
+      t[1] = -t[1];
+    }
+    if (geo.ModelType == Geographic)
+    {
+      double box[4];
+      BoxOf(t, width, height, box);
+      if (!FitsDegrees(box, t[1], -t[5]))
+      {
+        return this->Fail(vtkErrorCode::FileFormatError,
+          "its geographic extent " + BoxText(box) + " is not a box in degrees");
+      }
+    }
+
+    in.Width = width;
+    in.Height = height;
+    in.Channels = channels;
+    in.ScalarType = scalarType;
+    in.Geo = geo;
+    in.HasNoData = tiff.HasNoData;
+    in.NoData = tiff.NoData;
+    in.File = file;
+  }
+  catch (const std::exception& e)
+  {
+    // E.g. std::bad_alloc for a corrupt header, a filesystem error.
+    const bool memory = dynamic_cast<const std::bad_alloc*>(&e) != nullptr;
+    return this->Fail(vtkErrorCode::UnknownError, memory ? "not enough memory" : e.what());
+  }
+
+  // VTK orientation: the origin is the centre of the south-west pixel, y grows north.
+  const double* t = in.Geo.T;
+  const int extent[6] = { 0, in.Width - 1, 0, in.Height - 1, 0, 0 };
+  const double spacing[3] = { t[1], -t[5], 1.0 };
+  const double origin[3] = { t[0] + 0.5 * t[1], t[3] + in.Height * t[5] - 0.5 * t[5], 0.0 };
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  outInfo->Set(vtkDataObject::SPACING(), spacing, 3);
+  outInfo->Set(vtkDataObject::ORIGIN(), origin, 3);
+  vtkDataObject::SetPointDataActiveScalarInfo(outInfo, in.ScalarType, in.Channels);
+  return 1;
+}
+
+//------------------------------------------------------------------------------------------
+int vtkGlobeRasterReader::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInternals& in = *this->Internals;
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkImageData* output = vtkImageData::GetData(outInfo);
+  if (output)
+  {
+    output->Initialize();
+  }
+  if (in.File.empty() && !in.LastError.empty())
+  {
+    return 0; // the executive asks for data after a failed RequestInformation: said already
+  }
+  in.LastError.clear();
+  this->SetErrorCode(vtkErrorCode::NoError);
+  if (!output || in.File.empty() || !this->FileName || in.File != this->FileName)
+  {
+    return this->Fail(vtkErrorCode::UnknownError, "its header was not read (RequestInformation)");
+  }
+  const std::string file = in.File;
+  int ue[6];
+  outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), ue);
+  ue[0] = std::max(ue[0], 0);
+  ue[1] = std::min(ue[1], in.Width - 1);
+  ue[2] = std::max(ue[2], 0);
+  ue[3] = std::min(ue[3], in.Height - 1);
+  ue[4] = ue[5] = 0;
+  const double* t = in.Geo.T;
+  output->Initialize();
+  if (ue[0] > ue[1] || ue[2] > ue[3])
+  {
+    return 1; // an empty request
+  }
+  try
+  {
+    output->SetExtent(ue);
+    output->SetSpacing(t[1], -t[5], 1.0);
+    output->SetOrigin(t[0] + 0.5 * t[1], t[3] + in.Height * t[5] - 0.5 * t[5], 0.0);
+    output->AllocateScalars(in.ScalarType, in.Channels);
+    vtkDataArray* scalars = output->GetPointData()->GetScalars();
+    scalars->SetName(in.Channels == 1 ? "Values" : "Colors");
+
+    auto input = OpenImage(file);
+    if (!input)
+    {
+      return this->Fail(vtkErrorCode::CannotOpenFileError,
+        "it cannot be opened as an image any more (OpenImageIO: " + OIIO::geterror() + ")");
+    }
+    // File rows [r0, r1) hold VTK rows ue[2]..ue[3].
+    const int r0 = in.FlipRows ? in.Height - 1 - ue[3] : ue[2];
+    const int r1 = (in.FlipRows ? in.Height - 1 - ue[2] : ue[3]) + 1;
+    // Chunks of about a twentieth of the request, whole tile rows for tiled files.
+    const int align = in.TileHeight > 0 ? in.TileHeight : 1;
+    int chunk = std::max((r1 - r0 + 19) / 20, 1);
+    chunk = (chunk + align - 1) / align * align;
+    const OIIO::TypeDesc type =
+      in.Channels == 1 ? ReadTypeOf(in.ScalarType) : OIIO::TypeDesc(OIIO::TypeDesc::UINT8);
+    const size_t pixelBytes = type.size() * static_cast<size_t>(in.Channels);
+    const size_t rowBytes = pixelBytes * static_cast<size_t>(in.Width);
+    const int outWidth = ue[1] - ue[0] + 1;
+    unsigned char* out = static_cast<unsigned char*>(scalars->GetVoidPointer(0));
+    std::vector<unsigned char> buffer;
+    this->UpdateProgress(0.0);
+    for (int start = r0 / align * align; start < r1; start += chunk)
+    {
+      const int end = std::min(start + chunk, in.Height);
+      buffer.resize(rowBytes * static_cast<size_t>(end - start));
+      const bool read = in.TileHeight > 0
+        ? input->read_tiles(0, 0, in.FirstX, in.FirstX + in.Width, in.FirstY + start,
+            in.FirstY + end, 0, 1, 0, in.Channels, type, buffer.data())
+        : input->read_scanlines(
+            0, 0, in.FirstY + start, in.FirstY + end, 0, 0, in.Channels, type, buffer.data());
+      if (!read)
+      {
+        std::string error = input->geterror();
+        if (error.empty())
+        {
+          error = OIIO::geterror();
+        }
+        output->Initialize();
+        return this->Fail(vtkErrorCode::PrematureEndOfFileError,
+          "its pixels cannot be decoded; the file is corrupt or truncated (OpenImageIO: " + error +
+            ")");
+      }
+      for (int r = std::max(start, r0); r < std::min(end, r1); ++r)
+      {
+        const int row = (in.FlipRows ? in.Height - 1 - r : r) - ue[2];
+        const unsigned char* src = buffer.data() + rowBytes * static_cast<size_t>(r - start);
+        unsigned char* dst = out + pixelBytes * static_cast<size_t>(outWidth) * row;
+        if (!in.FlipColumns)
+        {
+          std::memcpy(dst, src + pixelBytes * ue[0], pixelBytes * outWidth);
+        }
+        else
+        {
+          for (int c = 0; c < outWidth; ++c)
+          {
+            std::memcpy(
+              dst + pixelBytes * c, src + pixelBytes * (in.Width - 1 - (ue[0] + c)), pixelBytes);
+          }
+        }
+      }
+      this->UpdateProgress(static_cast<double>(std::min(end, r1) - r0) / (r1 - r0));
+      if (this->GetAbortExecute())
+      {
+        output->Initialize();
+        return this->Fail(vtkErrorCode::UserError, "reading was aborted (AbortExecute)");
+      }
+    }
+    input->close();
+  }
+  catch (const std::exception& e)
+  {
+    output->Initialize();
+    const bool memory = dynamic_cast<const std::bad_alloc*>(&e) != nullptr;
+    return this->Fail(vtkErrorCode::UnknownError, memory ? "not enough memory" : e.what());
+  }
+
+  // The georeferencing.
+  const Georeference& geo = in.Geo;
+  vtkFieldData* fd = output->GetFieldData();
+  const auto addInt = [fd](const char* name, int value)
+  {
+    vtkNew<vtkIntArray> a;
+    a->SetName(name);
+    a->InsertNextValue(value);
+    fd->AddArray(a);
+  };
+  const auto addDoubles = [fd](const char* name, std::initializer_list<double> values)
+  {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(name);
+    for (double v : values)
+    {
+      a->InsertNextValue(v);
+    }
+    fd->AddArray(a);
+  };
+  const auto addString = [fd](const char* name, const std::string& value)
+  {
+    vtkNew<vtkStringArray> a;
+    a->SetName(name);
+    a->InsertNextValue(value);
+    fd->AddArray(a);
+  };
+  addInt(GetModelTypeArrayName(), geo.ModelType);
+  addInt(GetEPSGArrayName(), geo.EPSG);
+  addDoubles(GetGeoTransformArrayName(), { t[0], t[3], t[1], -t[5] });
+  if (geo.ModelType == Geographic)
+  {
+    double box[4];
+    BoxOf(t, in.Width, in.Height, box);
+    addDoubles(GetGeographicExtentArrayName(), { box[0], box[1], box[2], box[3] });
+  }
+  if (in.HasNoData)
+  {
+    addDoubles(GetNoDataValueArrayName(), { in.NoData });
+  }
+  addString(GetUnitsArrayName(), geo.Units);
+  if (geo.SemiMajor > 0.0)
+  {
+    addDoubles(GetDatumSemiAxesArrayName(), { geo.SemiMajor, geo.SemiMinor });
+  }
+  addString(GetFileNameArrayName(), file);
+  addString(GetGeoreferenceSourceArrayName(), geo.Source);
+  return 1;
+}
+
+//------------------------------------------------------------------------------------------
+void vtkGlobeRasterReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  const vtkInternals& in = *this->Internals;
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "EPSG: " << this->EPSG << "\n";
+  os << indent << "LastError: " << (in.LastError.empty() ? "(none)" : in.LastError) << "\n";
+  if (!in.File.empty())
+  {
+    const std::streamsize precision = os.precision(12);
+    os << indent << "Raster: " << in.Width << " x " << in.Height << " x " << in.Channels << " "
+       << vtkImageScalarTypeNameMacro(in.ScalarType) << "\n";
+    os << indent << "ModelType: " << ModelTypeName(in.Geo.ModelType) << ", EPSG:" << in.Geo.EPSG
+       << " (" << in.Geo.Source << ")\n";
+    os << indent << "NorthWestCorner: " << in.Geo.T[0] << ", " << in.Geo.T[3] << "\n";
+    os << indent << "PixelSize: " << in.Geo.T[1] << ", " << -in.Geo.T[5] << " " << in.Geo.Units
+       << "\n";
+    os.precision(precision);
+  }
+}

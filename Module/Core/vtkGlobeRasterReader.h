@@ -1,0 +1,125 @@
+/**
+ * @class   vtkGlobeRasterReader
+ * @brief   Reads a georeferenced raster (GeoTIFF, or any image with an ESRI world file) into
+ *          vtkImageData whose field data carries the georeferencing.
+ *
+ * Pixels are read with OpenImageIO; georeferencing comes from the GeoTIFF tags (libgeotiff)
+ * or from an ESRI world file next to the image (`name.tfw`/`name.tifw`, `.pgw`/`.pngw`,
+ * `.jgw`/`.jpgw`, generally the extension's first and last letters + `w`, the extension + `w`,
+ * or `.wld`). A world file's projection comes from `name.prj` (WKT whose top-level
+ * AUTHORITY/ID is EPSG), else from SetEPSG(); a world file without either is taken as
+ * geographic WGS 84 (EPSG:4326) only when its numbers are degrees, otherwise it is an error.
+ *
+ * Output orientation, the VTK way: point (i, j) is the centre of a pixel, i grows east and
+ * j grows NORTH, so row j = 0 is the southern row; the origin is the centre of the south-west
+ * pixel and the spacing is the pixel size, both in map units (degrees for geographic rasters,
+ * usually metres for projected ones). Files stored north-up (the usual case), south-up or
+ * east-to-west are all brought to this orientation.
+ *
+ * Scalars: a 1-channel raster keeps its native sample type (8/16/32-bit integers, float,
+ * double; half becomes float); rasters with more channels (RGB, RGBA) become unsigned char,
+ * converted by OpenImageIO; straight alpha is kept as stored (not premultiplied).
+ *
+ * Field data (names returned by the static Get...ArrayName() methods):
+ * - GlobeModelType (int, 1): 1 geographic, 2 projected (vtkGlobeRasterReader::ModelTypes).
+ * - GlobeEPSG (int, 1): the geographic or projected EPSG code; 0 when user-defined/unknown.
+ * - GlobeGeoTransform (double, 4): x and y of the north-west OUTER pixel corner, pixel width
+ *   (east) and pixel height (south), both positive, in map units.
+ * - GlobeGeographicExtent (double, 4; geographic only): west, east, south, north outer edges.
+ * - GlobeNoDataValue (double, 1; only when the file names one, GDAL_NODATA): may be NaN.
+ * - GlobeUnits (string, 1): the map unit ("degree", "metre", ...; "unknown").
+ * - GlobeDatumSemiAxes (double, 2; only when the file spells the ellipsoid out).
+ * - GlobeFileName (string, 1): the file read.
+ * - GlobeGeoreferenceSource (string, 1): where the georeferencing came from ("GeoTIFF",
+ *   "world file + .prj", "world file + SetEPSG", "world file, assumed WGS 84").
+ *
+ * RequestInformation reads headers only (image header, GeoTIFF tags, world and .prj files)
+ * and sets WHOLE_EXTENT, ORIGIN, SPACING and the scalar type and components. RequestData
+ * reads the update extent's rows in chunks, firing ProgressEvent after each chunk, and honours
+ * AbortExecute between chunks.
+ *
+ * Errors (missing, unreadable, corrupt or truncated file, no georeferencing, rotated or
+ * sheared rasters, contradictory georeferencing such as a world file disagreeing with the
+ * GeoTIFF tags, a .prj or SetEPSG code disagreeing with the file's, or a geographic model
+ * with a projected EPSG code) are reported with vtkErrorMacro naming the file and the reason,
+ * set the algorithm's error code and make the request fail, so the executive stops the
+ * pipeline there. GetLastError() gives the reason of the last failure.
+ */
+#ifndef vtkGlobeRasterReader_h
+#define vtkGlobeRasterReader_h
+
+#include "vtkGlobeCoreModule.h" // for export macro
+#include "vtkImageAlgorithm.h"
+
+#include <memory> // for std::unique_ptr
+#include <string> // for std::string
+
+class VTKGLOBECORE_EXPORT vtkGlobeRasterReader : public vtkImageAlgorithm
+{
+public:
+  static vtkGlobeRasterReader* New();
+  vtkTypeMacro(vtkGlobeRasterReader, vtkImageAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// The values of GlobeModelType (the same as vtkGlobeLayer::ModelTypes).
+  enum ModelTypes
+  {
+    Geographic = 1,
+    Projected = 2
+  };
+
+  ///@{
+  /// The raster file.
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  ///@{
+  /**
+   * The EPSG code of the raster's coordinates, for files that carry none (a world file
+   * without a .prj file). 0 (default): none given. A code that disagrees with the file's own
+   * is an error (contradictory georeferencing), as is a code PROJ's database does not know.
+   */
+  vtkSetMacro(EPSG, int);
+  vtkGetMacro(EPSG, int);
+  ///@}
+
+  /// The reason of the last failure, "" when the last request succeeded.
+  const char* GetLastError();
+
+  ///@{
+  /// The names of the field-data arrays (see the class description).
+  static const char* GetModelTypeArrayName() { return "GlobeModelType"; }
+  static const char* GetEPSGArrayName() { return "GlobeEPSG"; }
+  static const char* GetGeoTransformArrayName() { return "GlobeGeoTransform"; }
+  static const char* GetGeographicExtentArrayName() { return "GlobeGeographicExtent"; }
+  static const char* GetNoDataValueArrayName() { return "GlobeNoDataValue"; }
+  static const char* GetUnitsArrayName() { return "GlobeUnits"; }
+  static const char* GetDatumSemiAxesArrayName() { return "GlobeDatumSemiAxes"; }
+  static const char* GetFileNameArrayName() { return "GlobeFileName"; }
+  static const char* GetGeoreferenceSourceArrayName() { return "GlobeGeoreferenceSource"; }
+  ///@}
+
+protected:
+  vtkGlobeRasterReader();
+  ~vtkGlobeRasterReader() override;
+
+  int RequestInformation(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  char* FileName = nullptr;
+  int EPSG = 0;
+
+private:
+  vtkGlobeRasterReader(const vtkGlobeRasterReader&) = delete;
+  void operator=(const vtkGlobeRasterReader&) = delete;
+
+  int Fail(unsigned long errorCode, const std::string& why);
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif
