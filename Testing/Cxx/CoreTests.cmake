@@ -9,7 +9,9 @@ set(globe_core_tests
   TestGlobeLayerRead.cxx
   TestGlobeLayerBadInput.cxx
   TestGlobeLayerGeoTIFF.cxx
-  TestGlobeLayerVoidFill.cxx)
+  TestGlobeLayerVoidFill.cxx
+  TestGlobeMapProjection.cxx
+  TestGlobeMapProjectionShader.cxx)
 
 create_test_sourcelist(_globe_core_driver_sources GlobeCoreCxxTests.cxx ${globe_core_tests})
 add_executable(GlobeCoreCxxTests ${_globe_core_driver_sources})
