@@ -11,7 +11,9 @@ set(globe_core_tests
   TestGlobeLayerGeoTIFF.cxx
   TestGlobeLayerVoidFill.cxx
   TestGlobeRasterReader.cxx
-  TestGlobeLayerInput.cxx)
+  TestGlobeLayerInput.cxx
+  TestGlobeMapProjection.cxx
+  TestGlobeMapProjectionShader.cxx)
 
 create_test_sourcelist(_globe_core_driver_sources GlobeCoreCxxTests.cxx ${globe_core_tests})
 add_executable(GlobeCoreCxxTests ${_globe_core_driver_sources})

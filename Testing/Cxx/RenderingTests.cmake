@@ -8,6 +8,7 @@ set(globe_rendering_tests
   TestGlobeFarAway.cxx
   TestGlobeGridPass.cxx
   TestGlobeLookingAway.cxx
+  TestGlobeMapProjectionGPU.cxx
   TestGlobeMoon.cxx
   TestGlobeNadir.cxx
   TestGlobeRainier.cxx

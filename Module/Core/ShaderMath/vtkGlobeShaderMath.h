@@ -1,7 +1,8 @@
 /**
  * vtkGlobeShaderMath.h: the C++ side of the GLSL/C++ common-subset shader math (DESIGN.md §9).
  *
- * Includes the very GLSL text the GPU runs (globe_ellipsoid.glsl, globe_pgm.glsl) twice,
+ * Includes the very GLSL text the GPU runs (globe_ellipsoid.glsl, globe_pgm.glsl,
+ * globe_projection.glsl) twice,
  * with GLM types:
  *   vtkGlobeShaderMath::f::globe_...  in float, as the GPU computes it;
  *   vtkGlobeShaderMath::d::globe_...  in double, the same algorithm without rounding noise.
@@ -28,6 +29,7 @@ using namespace glm;
 #define GLOBE_NEWTON_TOLERANCE 4.8e-7f /* 4 float ulp */
 #include "globe_ellipsoid.glsl"
 #include "globe_pgm.glsl"
+#include "globe_projection.glsl"
 #undef GLOBE_NEWTON_TOLERANCE
 #undef GLOBE_OUT
 } // namespace
@@ -78,13 +80,19 @@ inline double mix(double a, double b, double t)
 {
   return a + (b - a) * t;
 }
+// globe_projection.glsl's exact branch (GLOBE_EXACT_MATH) uses these C library functions.
+using std::expm1;
+using std::log1p;
 #define GLOBE_OUT(T) T&
 #define GLOBE_NEWTON_TOLERANCE 8.9e-16 /* 4 double ulp */
 #define GLOBE_EXACT_ATAN2
+#define GLOBE_EXACT_MATH
 #define float double
 #include "globe_ellipsoid.glsl"
 #include "globe_pgm.glsl"
+#include "globe_projection.glsl"
 #undef float
+#undef GLOBE_EXACT_MATH
 #undef GLOBE_EXACT_ATAN2
 #undef GLOBE_NEWTON_TOLERANCE
 #undef GLOBE_OUT

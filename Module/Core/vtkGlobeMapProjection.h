@@ -1,0 +1,200 @@
+/**
+ * @class   vtkGlobeMapProjection
+ * @brief   A map projection of a datum ellipsoid: geodetic (lon, lat) <-> map (x, y), on the
+ *          CPU with GeographicLib and on the GPU through globe_projection.glsl.
+ *
+ * Kinds (Documentation/projections.md):
+ * - Geographic: x = longitude, y = latitude, in degrees (EPSG:4326).
+ * - Equirectangular: x = FE + a cos(phi1) (lon - lon0), y = FN + a lat (metres, radians
+ *   inside), any standard parallel phi1 (EPSG:4087).
+ * - PolarStereographic: north or south, scale ScaleFactor at LatitudeOfTrueScale (variant B:
+ *   k = 1 at e.g. 70 N for EPSG:3413; variant A / UPS: k0 = 0.994 at the pole), central
+ *   meridian, false easting/northing (GeographicLib::PolarStereographic).
+ * - Mercator: ellipsoidal, scale ScaleFactor at the standard parallel (EPSG:3395)
+ *   (GeographicLib::LambertConformalConic with a standard parallel at the equator).
+ * - WebMercator: spherical formulas with R = a on the datum's latitude (EPSG:3857).
+ * - TransverseMercator: central meridian, ScaleFactor, latitude of origin, false
+ *   easting/northing; UTM zones (GeographicLib::TransverseMercator, Krueger's series).
+ *
+ * For the cylindrical kinds (Geographic, Equirectangular, Mercator, WebMercator) Forward wraps
+ * the longitude into [LongitudeWest, LongitudeWest + 360) before projecting, so both the
+ * -180..180 (default) and the 0..360 conventions give the x of their rasters.
+ *
+ * SetFromEPSG knows 4326, 4087, 32662, 3413, 3031, 3995, 3976, 3032, 32661, 32761, 3395,
+ * 3857 (900913, 3785), 326zz and 327zz (UTM zones 1-60), all on WGS84.
+ *
+ * GPU: ComputeShaderParameters turns a raster's georeferencing into the seven vec4 of
+ * globe_projection.glsl (computed in double, the big numbers folded in), and
+ * GetShaderFunctionName names the GLSL function to call with them. That function maps
+ * (lon, lat) in radians, as hi + lo pairs, to the raster's texture coordinates.
+ *
+ * Bad input (non-finite coordinates, |lat| > 90, unknown EPSG code, bad ellipsoid or raster)
+ * is reported with vtkErrorMacro and the call returns false; outputs are then NaN.
+ */
+#ifndef vtkGlobeMapProjection_h
+#define vtkGlobeMapProjection_h
+
+#include "vtkGlobeCoreModule.h" // for export macro
+#include "vtkObject.h"
+
+class VTKGLOBECORE_EXPORT vtkGlobeMapProjection : public vtkObject
+{
+public:
+  /// A new projection is Geographic (EPSG:4326) on WGS84.
+  static vtkGlobeMapProjection* New();
+  vtkTypeMacro(vtkGlobeMapProjection, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Kinds
+  {
+    Geographic = 0,
+    Equirectangular = 1,
+    PolarStereographic = 2,
+    Mercator = 3,
+    WebMercator = 4,
+    TransverseMercator = 5
+  };
+
+  /// Number of floats ComputeShaderParameters writes (seven vec4).
+  enum
+  {
+    NumberOfShaderParameters = 28
+  };
+
+  ///@{
+  /// The kind; the parameters below are kept when it changes.
+  vtkSetClampMacro(Kind, int, Geographic, TransverseMercator);
+  vtkGetMacro(Kind, int);
+  const char* GetKindAsString();
+  ///@}
+
+  /**
+   * Set everything from an EPSG code (the datum too). Returns false, with an error naming
+   * the code, for codes not listed in the class description; the projection is then unchanged.
+   */
+  bool SetFromEPSG(int code);
+  /// The EPSG code last set with SetFromEPSG; 0 after a SetTo... call or SetEllipsoid.
+  vtkGetMacro(EPSG, int);
+
+  ///@{
+  /**
+   * The datum ellipsoid: semi-major axis a (m, finite, > 0) and flattening f (in [0, 1)).
+   * Default WGS84. Returns false (unchanged) with an error for bad values.
+   */
+  bool SetEllipsoid(double semiMajorAxis, double flattening);
+  void SetEllipsoidToWGS84();
+  vtkGetMacro(SemiMajorAxis, double);
+  vtkGetMacro(Flattening, double);
+  ///@}
+
+  ///@{
+  /// Convenience setters for each kind (angles in degrees, lengths in metres).
+  void SetToGeographic();
+  void SetToEquirectangular(double centralMeridian, double standardParallel,
+    double falseEasting = 0.0, double falseNorthing = 0.0);
+  /// North when latitudeOfTrueScale > 0; the scale there is scaleFactor (UPS: 90, 0.994).
+  void SetToPolarStereographic(double latitudeOfTrueScale, double centralMeridian,
+    double scaleFactor = 1.0, double falseEasting = 0.0, double falseNorthing = 0.0);
+  void SetToMercator(double centralMeridian, double standardParallel, double scaleFactor = 1.0,
+    double falseEasting = 0.0, double falseNorthing = 0.0);
+  void SetToWebMercator(double centralMeridian = 0.0);
+  void SetToTransverseMercator(double centralMeridian, double scaleFactor,
+    double falseEasting = 0.0, double falseNorthing = 0.0, double latitudeOfOrigin = 0.0);
+  /// UTM zone 1..60 (false and an error otherwise), north or south hemisphere.
+  bool SetToUTM(int zone, bool north);
+  ///@}
+
+  ///@{
+  /// The individual parameters (degrees, metres). Not every kind uses every one.
+  vtkSetMacro(CentralMeridian, double);
+  vtkGetMacro(CentralMeridian, double);
+  /// Equirectangular and Mercator: the parallel where ScaleFactor holds (Mercator) or whose
+  /// cosine scales x (equirectangular).
+  vtkSetMacro(StandardParallel, double);
+  vtkGetMacro(StandardParallel, double);
+  /// Polar stereographic: the latitude where the scale is ScaleFactor; its sign picks the pole.
+  vtkSetMacro(LatitudeOfTrueScale, double);
+  vtkGetMacro(LatitudeOfTrueScale, double);
+  vtkSetMacro(ScaleFactor, double);
+  vtkGetMacro(ScaleFactor, double);
+  /// Transverse Mercator: the latitude where y = FalseNorthing on the central meridian.
+  vtkSetMacro(LatitudeOfOrigin, double);
+  vtkGetMacro(LatitudeOfOrigin, double);
+  vtkSetMacro(FalseEasting, double);
+  vtkGetMacro(FalseEasting, double);
+  vtkSetMacro(FalseNorthing, double);
+  vtkGetMacro(FalseNorthing, double);
+  ///@}
+
+  ///@{
+  /// Cylindrical kinds: Forward's longitudes lie in [LongitudeWest, LongitudeWest + 360).
+  vtkSetMacro(LongitudeWest, double);
+  vtkGetMacro(LongitudeWest, double);
+  void SetLongitudeDomainToMinus180To180() { this->SetLongitudeWest(-180.0); }
+  void SetLongitudeDomainTo0To360() { this->SetLongitudeWest(0.0); }
+  ///@}
+
+  ///@{
+  /// (longitude, latitude) in degrees -> map (x, y). False (NaN) with an error for bad input.
+  bool Forward(double lon, double lat, double xy[2]);
+  /// Map (x, y) -> (longitude, latitude) in degrees. False (NaN) with an error for bad input.
+  bool Inverse(double x, double y, double lonLat[2]);
+  ///@}
+
+  /**
+   * West, east, south, north (degrees; east may exceed 180) of the region where the
+   * projection is valid and used: the whole globe for Geographic and Equirectangular,
+   * +-89.5 (Mercator), +-85.0511 (Web Mercator), its hemisphere (polar stereographic),
+   * 10 degrees either side of the central meridian between 89 S and 89 N (transverse
+   * Mercator; UTM: 80 S to 84 N). The GPU functions return (-1, -1) outside it.
+   */
+  void GetValidDomain(double box[4]);
+  /// Whether (lon, lat) in degrees lies in GetValidDomain's region.
+  bool IsInValidDomain(double lon, double lat);
+
+  /**
+   * The GLSL parameters for a raster: map coordinates of its north-west outer corner, pixel
+   * size (x east, y south, both > 0, map units) and size in pixels, as the layer gives them
+   * (vtkGlobeLayer::GetProjectedGeoTransform). Computed in double, written as floats
+   * (p0.xyzw, p1.xyzw, ... p6.xyzw). False with an error for bad input.
+   */
+  bool ComputeShaderParameters(const double origin[2], const double pixelSize[2], int width,
+    int height, float parameters[28]);
+  /// The same in double, for globe_projection.glsl's double C++ mirror (hi + lo pairs exact).
+  bool ComputeShaderParametersDouble(const double origin[2], const double pixelSize[2],
+    int width, int height, double parameters[28]);
+
+  /**
+   * The globe_projection.glsl function that takes these parameters:
+   * globe_projectEquirectangular (Geographic too), globe_projectMercator (Web Mercator too),
+   * globe_projectPolarStereographic or globe_projectTransverseMercator.
+   */
+  const char* GetShaderFunctionName();
+
+protected:
+  vtkGlobeMapProjection();
+  ~vtkGlobeMapProjection() override;
+
+  int Kind = Geographic;
+  int EPSG = 4326;
+  double SemiMajorAxis = 6378137.0;
+  double Flattening = 1.0 / 298.257223563;
+  double CentralMeridian = 0.0;
+  double StandardParallel = 0.0;
+  double LatitudeOfTrueScale = 90.0;
+  double ScaleFactor = 1.0;
+  double LatitudeOfOrigin = 0.0;
+  double FalseEasting = 0.0;
+  double FalseNorthing = 0.0;
+  double LongitudeWest = -180.0;
+  bool UTM = false;
+
+private:
+  vtkGlobeMapProjection(const vtkGlobeMapProjection&) = delete;
+  void operator=(const vtkGlobeMapProjection&) = delete;
+
+  bool ForwardUnchecked(double lon, double lat, double xy[2]);
+  bool InverseUnchecked(double x, double y, double lonLat[2]);
+};
+
+#endif
