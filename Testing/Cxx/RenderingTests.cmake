@@ -13,6 +13,9 @@ set(globe_rendering_tests
   TestGlobeRenderBadInput.cxx
   TestGlobeSharedDepth.cxx
   TestGlobeWholeEarth.cxx)
+# Depth for the whole scene: clipping policy, depth modes, picking.
+list(APPEND globe_rendering_tests
+  TestGlobeClippingRange.cxx)
 
 create_test_sourcelist(_globe_rendering_driver_sources GlobeRenderingCxxTests.cxx
   ${globe_rendering_tests}

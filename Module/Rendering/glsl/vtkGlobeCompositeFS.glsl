@@ -52,5 +52,6 @@ void main()
   float diffuse = max(dot(normal, globeLightDirection), 0.0);
   vec3 color = albedo * (globeAmbient + (1.0 - globeAmbient) * diffuse * globeLightColor);
   gl_FragData[0] = vec4(color, 1.0);
+  // Depth hook: the G-buffer depth is already in the scene's depth mode (vtkGlobeDepthPass).
   gl_FragDepth = depth;
 }
