@@ -15,7 +15,8 @@ set(globe_rendering_tests
   TestGlobeWholeEarth.cxx)
 # Depth for the whole scene: clipping policy, depth modes, picking.
 list(APPEND globe_rendering_tests
-  TestGlobeClippingRange.cxx)
+  TestGlobeClippingRange.cxx
+  TestGlobeDepthModes.cxx)
 
 create_test_sourcelist(_globe_rendering_driver_sources GlobeRenderingCxxTests.cxx
   ${globe_rendering_tests}
