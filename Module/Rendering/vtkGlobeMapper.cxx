@@ -2,7 +2,9 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkGlobeClippingRange.h" // depth: clipping policy
 #include "vtkGlobeCompositePass.h"
+#include "vtkGlobeDepthPass.h" // depth: the scene's depth mode
 #include "vtkGlobeEllipsoid.h"
 #include "vtkGlobeGridPass.h"
 #include "vtkGlobeLayer.h"
@@ -431,6 +433,8 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   {
     return;
   }
+  // Depth: from now on the renderer's ResetCameraClippingRange uses the globe's policy.
+  vtkGlobeClippingRange::Install(ren);
   vtkOpenGLState* state = window->GetState();
   int viewport[4];
   state->vtkglGetIntegerv(GL_VIEWPORT, viewport);
@@ -582,8 +586,17 @@ bool vtkGlobeMapper::RenderGBuffer(vtkRenderer* ren, vtkActor* act, int width, i
 
   static const std::string vertexShader = vtkGlobeShaderSources::Replace(
     vtkGlobeRasterVS, "//GLOBE::Math", vtkGlobeShaderSources::Math());
+  // --- depth mode (vtkGlobeDepthPass): the G-buffer's depth is written in the scene's mode,
+  // and the composite pass copies it as it is.
+  vtkGlobeDepthPass* depthPass = vtkGlobeDepthPass::FindInProp(act);
+  std::string rasterVS = vertexShader, rasterFS = vtkGlobeRasterFS;
+  if (depthPass)
+  {
+    depthPass->InjectDepthCode(rasterVS, rasterFS);
+  }
+  // --- end depth mode
   vtkShaderProgram* program =
-    window->GetShaderCache()->ReadyShaderProgram(vertexShader.c_str(), vtkGlobeRasterFS, "");
+    window->GetShaderCache()->ReadyShaderProgram(rasterVS.c_str(), rasterFS.c_str(), "");
   if (!program || !program->GetCompiled())
   {
     vtkErrorMacro(<< "The globe's rasterization shader did not compile");
@@ -660,6 +673,10 @@ bool vtkGlobeMapper::RenderGBuffer(vtkRenderer* ren, vtkActor* act, int width, i
   program->SetUniformMatrix4x4("globeEyeToClip", columnMajor);
   vtkGlobeShaderSources::SetRadii(program, in.Ellipsoid);
   program->SetUniformf("globeOneMinusRp", static_cast<float>(1.0 - in.Grid->GetPrimaryRadius()));
+  if (depthPass) // depth mode
+  {
+    depthPass->SetDepthUniforms(program);
+  }
 
   in.VAO->Bind();
   in.Indices->Bind();

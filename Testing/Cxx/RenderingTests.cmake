@@ -17,6 +17,10 @@ set(globe_rendering_tests
   TestGlobeSharedDepth.cxx
   TestGlobeWholeEarth.cxx
   TestGlobeLayerPipeline.cxx)
+# Depth for the whole scene: clipping policy, depth modes, picking.
+list(APPEND globe_rendering_tests
+  TestGlobeClippingRange.cxx
+  TestGlobeDepthModes.cxx)
 
 create_test_sourcelist(_globe_rendering_driver_sources GlobeRenderingCxxTests.cxx
   ${globe_rendering_tests}

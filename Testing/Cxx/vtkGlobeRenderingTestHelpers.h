@@ -6,6 +6,7 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
+#include "vtkGlobeDepthPass.h"
 #include "vtkGlobeEllipsoid.h"
 #include "vtkGlobeLayer.h"
 #include "vtkGlobeMapper.h"
@@ -215,6 +216,14 @@ inline double DepthBound(vtkCamera* camera, double z)
   const double n = camera->GetClippingRange()[0], f = camera->GetClippingRange()[1];
   const double step = 1.0 / 16777215.0;
   return 4.0 * z * z * (f - n) / (f * n) * step + 8.0 * z / 16777216.0;
+}
+
+/// The same for a logarithmic depth buffer (vtkGlobeDepthPass): 4 steps of 24 bits of
+/// log2(1 + z) / log2(1 + far), 4 float ulps of the shader's log2, and 8 ulp of its z.
+inline double LogDepthBound(vtkGlobeDepthPass* pass, double z)
+{
+  const double perStep = (1.0 + z) * std::log(2.0) * std::log2(1.0 + pass->GetLastFar());
+  return perStep * (4.0 / 16777215.0 + 4.0 / 16777216.0) + 8.0 * z / 16777216.0;
 }
 
 /// The texel size (m, north-south) of the finest height layer covering (lon, lat).
@@ -473,7 +482,8 @@ inline std::vector<double> MeshEdgeMap(Scene& scene)
  * differences around the point), or, where L is more than 4 texels, by the local relief over
  * L; plus how the GPU samples (float coordinates, 8-bit filter weights, mipmap offset).
  */
-inline TerrainCheck CheckTerrain(Scene& scene, int stride)
+/// With a vtkGlobeDepthPass, depth is read back in its mode (depth modes, Documentation/depth.md).
+inline TerrainCheck CheckTerrain(Scene& scene, int stride, vtkGlobeDepthPass* depthPass = nullptr)
 {
   TerrainCheck result;
   vtkRenderer* renderer = scene.Renderer;
@@ -499,7 +509,7 @@ inline TerrainCheck CheckTerrain(Scene& scene, int stride)
         continue;
       }
       double p[3];
-      UnprojectPixel(renderer, x + 0.5, y + 0.5, d, p);
+      UnprojectPixel(renderer, x + 0.5, y + 0.5, depthPass ? depthPass->GetPerspectiveDepth(d, camera) : d, p);
       double llh[3];
       if (!scene.Body->CartesianToGeodeticQuiet(p, llh))
       {
@@ -553,7 +563,8 @@ inline TerrainCheck CheckTerrain(Scene& scene, int stride)
       const double texel = FinestTexel(layers, llh[0], llh[1], radius);
       const double sampling = slope * (radius * 2.0 / 16777216.0 * 8.0 + std::min(texel, 1e7) / 256.0 +
                                         (spacing > texel && spacing < 1e29 ? 0.5 * spacing : 0.0));
-      const double bound = DepthBound(camera, z) * (1.0 + slope) + 2.0 * curvature + sampling +
+      const bool logDepth = depthPass && depthPass->GetMode() == vtkGlobeDepthPass::Logarithmic;
+      const double bound = (logDepth ? LogDepthBound(depthPass, z) : DepthBound(camera, z)) * (1.0 + slope) + 2.0 * curvature + sampling +
         (spacing < 1e29 ? spacing * spacing / (6.0 * radius) : 0.0) + 1e-3;
       const double error = std::abs(llh[2] - h);
       errors.push_back(error);

@@ -68,5 +68,6 @@ void main()
   //GLOBE::Shade
   color = mix(color, lineColor, lines);
   gl_FragData[0] = vec4(color, 1.0);
+  // Depth hook: the G-buffer depth is already in the scene's depth mode (vtkGlobeDepthPass).
   gl_FragDepth = depth;
 }
