@@ -2,6 +2,7 @@
 
 #include "vtkDataArray.h"
 #include "vtkGlobeLayer.h"
+#include "vtkGlobeMapProjection.h"
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -15,6 +16,8 @@
 #include <cmath>
 #include <sstream>
 #include <vector>
+
+#include "globe_projection.h"
 
 vtkStandardNewMacro(vtkGlobeLayerSet);
 
@@ -34,6 +37,10 @@ struct Entry
   bool Reported = false;  // an error about this layer was reported already
   bool Wraps = false;     // a global geographic layer: longitude wraps, no east/west border
   double Map[4] = { 0, 0, 0, 0 };    // geographic: west, east-west span, north, span (rad)
+  // Projected layers: the projection, its globe_projection.glsl function and parameters.
+  vtkSmartPointer<vtkGlobeMapProjection> Projection;
+  std::string Function;
+  float Parameters[vtkGlobeMapProjection::NumberOfShaderParameters] = {};
   double Border[4] = { 0, 0, 0, 0 }; // feather u, v (texture coordinates); 1/log(n); unused
 };
 
@@ -158,19 +165,36 @@ int vtkGlobeLayerSet::Update()
       }
       continue;
     }
-    if (layer->GetModelType() != vtkGlobeLayer::Geographic)
+    e.Function.clear();
+    if (layer->GetModelType() == vtkGlobeLayer::Projected)
+    {
+      if (!this->PrepareProjection(&e))
+      {
+        continue;
+      }
+    }
+    else if (layer->GetModelType() != vtkGlobeLayer::Geographic)
     {
       if (!e.Reported)
       {
-        vtkErrorMacro(<< "Layer " << name << " is skipped: its map projection (EPSG:"
-                      << layer->GetEPSG()
-                      << ") is not supported yet; only geographic (EPSG:4326-style) rasters are");
+        vtkErrorMacro(<< "Layer " << name << " is skipped: its georeferencing is neither geographic "
+                      << "nor projected (model type " << layer->GetModelType() << ")");
         e.Reported = true;
       }
       continue;
     }
     e.Reported = false;
     e.Active = true;
+    const double feather = layer->GetFeatherWidth();
+    e.Border[2] = 1.0 / std::log(layer->GetProjectionQualityLimit());
+    if (!e.Function.empty())
+    {
+      e.Wraps = false;
+      e.Border[0] = feather / layer->GetWidth();
+      e.Border[1] = feather / layer->GetHeight();
+      order.push_back(&e);
+      continue;
+    }
     double extent[4];
     layer->GetGeographicExtent(extent);
     const double deg = vtkMath::Pi() / 180.0;
@@ -181,11 +205,9 @@ int vtkGlobeLayerSet::Update()
     e.Wraps = layer->IsGlobal();
     // A global layer wraps in longitude and has no east/west border; one that reaches both
     // poles has no north/south border.
-    const double feather = layer->GetFeatherWidth();
     e.Border[0] = e.Wraps ? 0.0 : feather / layer->GetWidth();
     const bool polesCovered = extent[2] <= -90.0 && extent[3] >= 90.0;
     e.Border[1] = polesCovered ? 0.0 : feather / layer->GetHeight();
-    e.Border[2] = 1.0 / std::log(layer->GetProjectionQualityLimit());
     order.push_back(&e);
   }
   std::stable_sort(order.begin(), order.end(), [](const Entry* a, const Entry* b) {
@@ -225,6 +247,76 @@ int vtkGlobeLayerSet::Update()
     first = false;
   }
   return static_cast<int>(order.size());
+}
+
+bool vtkGlobeLayerSet::PrepareProjection(void* entry)
+{
+  Entry& e = *static_cast<Entry*>(entry);
+  vtkGlobeLayer* layer = e.Layer;
+  const std::string name = layer->GetFileName() ? layer->GetFileName() : "(in-memory layer)";
+  auto refuse = [&](const std::string& why) {
+    if (!e.Reported)
+    {
+      vtkErrorMacro(<< "Layer " << name << " is skipped: " << why);
+      e.Reported = true;
+    }
+    e.Function.clear();
+    return false;
+  };
+  if (!e.Projection)
+  {
+    e.Projection = vtkSmartPointer<vtkGlobeMapProjection>::New();
+  }
+  vtkGlobeMapProjection* projection = e.Projection;
+  const int epsg = layer->GetEPSG();
+  if (epsg <= 0)
+  {
+    return refuse("it is in projected coordinates without an EPSG code, so its projection is "
+                  "unknown");
+  }
+  // The projection's own errors would name only the code; say which layer it is.
+  const bool warnings = vtkObject::GetGlobalWarningDisplay();
+  vtkObject::GlobalWarningDisplayOff();
+  const bool known = projection->SetFromEPSG(epsg);
+  vtkObject::SetGlobalWarningDisplay(warnings);
+  if (!known)
+  {
+    return refuse("its map projection EPSG:" + std::to_string(epsg) + " is not supported (" +
+      "supported: geographic, equirectangular, polar stereographic, Mercator, Web Mercator, "
+      "transverse Mercator / UTM)");
+  }
+  const double a = layer->GetDatumSemiMajorAxis(), b = layer->GetDatumSemiMinorAxis();
+  if (a > 0.0 && b > 0.0 && b <= a)
+  {
+    projection->SetEllipsoid(a, (a - b) / a);
+  }
+  double origin[2], pixelSize[2];
+  layer->GetProjectedGeoTransform(origin, pixelSize);
+  vtkObject::GlobalWarningDisplayOff();
+  bool ok = projection->ComputeShaderParameters(
+    origin, pixelSize, layer->GetWidth(), layer->GetHeight(), e.Parameters);
+  // The raster must lie in the projection's domain: its centre maps to a (lon, lat) there and
+  // back to itself (an inverse far outside the domain does not round-trip).
+  const double centre[2] = { origin[0] + 0.5 * pixelSize[0] * layer->GetWidth(),
+    origin[1] - 0.5 * pixelSize[1] * layer->GetHeight() };
+  double lonLat[2], back[2];
+  ok = ok && projection->Inverse(centre[0], centre[1], lonLat) &&
+    projection->IsInValidDomain(lonLat[0], lonLat[1]) &&
+    projection->Forward(lonLat[0], lonLat[1], back) &&
+    std::abs(back[0] - centre[0]) < 0.01 * pixelSize[0] &&
+    std::abs(back[1] - centre[1]) < 0.01 * pixelSize[1];
+  vtkObject::SetGlobalWarningDisplay(warnings);
+  if (!ok)
+  {
+    char text[300];
+    std::snprintf(text, sizeof(text),
+      "its georeferencing (north-west corner %.6g, %.6g; pixel %.6g x %.6g; %d x %d pixels) does "
+      "not fit its projection EPSG:%d (the extent is empty or outside the projection's domain)",
+      origin[0], origin[1], pixelSize[0], pixelSize[1], layer->GetWidth(), layer->GetHeight(), epsg);
+    return refuse(text);
+  }
+  e.Function = projection->GetShaderFunctionName();
+  return true;
 }
 
 double vtkGlobeLayerSet::GetMinimumHeight()
@@ -347,6 +439,23 @@ void EmitBlend(std::ostream& s, int mode, const char* target, const char* v)
   }
 }
 
+// The GLSL expression of a layer's texture coordinates at (lon hi + lo, lat hi + lo).
+std::string UV(const Entry* e, const std::string& p, const char* lonHi, const char* lonLo,
+  const char* latHi, const char* latLo)
+{
+  if (e->Function.empty())
+  {
+    return std::string("globe_geographicUV(") + lonHi + " + " + lonLo + ", " + latHi + " + " +
+      latLo + ", " + p + "Map)";
+  }
+  std::string call = e->Function + "(" + lonHi + ", " + lonLo + ", " + latHi + ", " + latLo;
+  for (int k = 0; k < 7; ++k)
+  {
+    call += ", " + p + "Projection[" + std::to_string(k) + "]";
+  }
+  return call + ")";
+}
+
 void EmitResolveAverage(std::ostream& s, const char* target, const char* zero)
 {
   s << "  if (sumW > 0.0) " << target << " = mix(" << target
@@ -368,7 +477,8 @@ std::string vtkGlobeLayerSet::GetShaderKey(int roles)
     key << RoleFunction(role)[0] << RoleFunction(role)[1] << "[";
     for (const Entry* e : in.Roles[role])
     {
-      key << e->Layer->GetBlendMode() << (e->Wraps ? "w" : "g")
+      key << e->Layer->GetBlendMode()
+          << (!e->Function.empty() ? e->Function.substr(13, 2) : (e->Wraps ? "w" : "g"))
           << (e->Layer->GetProjectionQualityWeight() ? "q" : "") << ",";
     }
     key << "]";
@@ -381,6 +491,18 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
   const auto& in = *this->Internals;
   std::ostringstream s;
   s << "// Generated by vtkGlobeLayerSet: " << this->GetShaderKey(roles) << "\n";
+  bool projected = false;
+  for (int role = 0; role < NumberOfRoles; ++role)
+  {
+    for (const Entry* e : in.Roles[role])
+    {
+      projected |= Included(role, roles) && !e->Function.empty();
+    }
+  }
+  if (projected)
+  {
+    s << globe_projection << "\n";
+  }
   // Shared helpers: texture coordinates of a geographic layer, the coverage weight with its
   // feathered border, and Kooima's projection-quality weight.
   s << "const float globe_TwoPi = 6.283185307179586;\n"
@@ -428,7 +550,12 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
     {
       const std::string p = Prefix(role, i);
       s << "uniform sampler2D " << p << ";\n"
-        << "uniform vec4 " << p << "Map;\n"
+        << "uniform vec4 " << p << "Map;\n";
+      if (!list[i]->Function.empty())
+      {
+        s << "uniform vec4 " << p << "Projection[7];\n";
+      }
+      s << ""
         << "uniform vec4 " << p << "Style;\n" // opacity, gamma, valid min, valid max
         << "uniform vec4 " << p << "Border;\n";
     }
@@ -481,7 +608,7 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
       const Entry* e = list[i];
       const std::string p = Prefix(role, i);
       const std::string wraps = e->Wraps ? "true" : "false";
-      s << "  vec2 uv" << i << " = globe_geographicUV(lon, lat, " << p << "Map);\n"
+      s << "  vec2 uv" << i << " = " << UV(e, p, "lon", "0.0", "lat", "0.0") << ";\n"
         << "  vec2 dx" << i << ", dy" << i << ";\n"
         << "  globe_uvDerivatives(uv" << i << ", " << wraps << ", dx" << i << ", dy" << i << ");\n";
     }
@@ -498,8 +625,8 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
       s << "  w = globe_coverage(uv, " << p << "Border) * " << p << "Style.x;\n";
       if (layer->GetProjectionQualityWeight())
       {
-        s << "  uvE = globe_geographicUV(lon + 1e-3, lat, " << p << "Map);\n"
-          << "  uvN = globe_geographicUV(lon, lat + 1e-3, " << p << "Map);\n"
+        s << "  uvE = " << UV(e, p, "lon", "1e-3", "lat", "0.0") << ";\n"
+          << "  uvN = " << UV(e, p, "lon", "0.0", "lat", "(lat > 0.0 ? -1e-3 : 1e-3)") << ";\n"
           << "  w *= globe_quality(uv, uvE, uvN, cosLat, vec2(textureSize(" << p << ", 0)), " << p
           << "Border.z, " << (e->Wraps ? "true" : "false") << ");\n";
       }
@@ -513,8 +640,23 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
           << "    float vW = textureGrad(" << p << ", uv - vec2(texel.x, 0.0), dx, dy).r;\n"
           << "    float vN = textureGrad(" << p << ", uv - vec2(0.0, texel.y), dx, dy).r;\n"
           << "    float vS = textureGrad(" << p << ", uv + vec2(0.0, texel.y), dx, dy).r;\n"
-          << "    vec2 gi = vec2((vE - vW) / (2.0 * texel.x * " << p << "Map.y),\n"
-          << "                   (vN - vS) / (2.0 * texel.y * " << p << "Map.w));\n"
+          ;
+        if (e->Function.empty())
+        {
+          s << "    vec2 gi = vec2((vE - vW) / (2.0 * texel.x * " << p << "Map.y),\n"
+            << "                   (vN - vS) / (2.0 * texel.y * " << p << "Map.w));\n";
+        }
+        else
+        {
+          // Per texture unit (u east, v south), then per radian through the projection's
+          // Jacobian, from offsets passed as the low parts of (lon, lat): exact steps.
+          s << "    vec2 perUV = vec2((vE - vW) / (2.0 * texel.x), (vS - vN) / (2.0 * texel.y));\n"
+            << "    float eLat = lat > 0.0 ? -1e-4 : 1e-4;\n"
+            << "    vec2 dLon = (" << UV(e, p, "lon", "1e-4", "lat", "0.0") << " - uv) / 1e-4;\n"
+            << "    vec2 dLat = (" << UV(e, p, "lon", "0.0", "lat", "eLat") << " - uv) / eLat;\n"
+            << "    vec2 gi = vec2(dot(perUV, dLon), dot(perUV, dLat));\n";
+        }
+        s
           << "    bool valid = !isnan(v) && !isnan(gi.x) && !isnan(gi.y) && v >= " << p
           << "Style.z && v <= " << p << "Style.w;\n"
           << "    if (!valid) w = 0.0;\n"
@@ -607,6 +749,11 @@ void vtkGlobeLayerSet::BindTextures(vtkShaderProgram* program, int roles)
       program->SetUniform4f((p + "Map").c_str(), f4(e->Map).data());
       program->SetUniform4f((p + "Style").c_str(), f4(style).data());
       program->SetUniform4f((p + "Border").c_str(), f4(e->Border).data());
+      if (!e->Function.empty())
+      {
+        program->SetUniform4fv((p + "Projection").c_str(), 7,
+          reinterpret_cast<const float(*)[4]>(e->Parameters));
+      }
     }
   }
 }

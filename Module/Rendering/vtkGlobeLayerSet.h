@@ -108,6 +108,7 @@ protected:
   int NumberOfUploads = 0;
 
 private:
+  bool PrepareProjection(void* entry);
   vtkGlobeLayerSet(const vtkGlobeLayerSet&) = delete;
   void operator=(const vtkGlobeLayerSet&) = delete;
 

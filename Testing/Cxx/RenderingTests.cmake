@@ -36,6 +36,8 @@ vtk_module_autoinit(TARGETS GlobeRenderingCxxTests
 set(_globe_baselines "${PROJECT_SOURCE_DIR}/Testing/Baseline")
 set(_globe_temporary "${CMAKE_BINARY_DIR}/Testing/Temporary")
 file(MAKE_DIRECTORY "${_globe_temporary}")
+target_compile_definitions(GlobeRenderingCxxTests PRIVATE
+  "VTKGLOBE_TEMP_DIR=\"${_globe_temporary}\"")
 foreach (test_file IN LISTS globe_rendering_tests)
   get_filename_component(test_name "${test_file}" NAME_WE)
   add_test(NAME "Rendering.${test_name}"

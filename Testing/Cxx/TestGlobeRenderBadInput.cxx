@@ -1,11 +1,15 @@
-// Bad input to the globe mapper: no layers; missing, corrupt, non-georeferenced and
-// unsupported-projection rasters among good ones; a camera at the centre of the body, inside
+// Bad input to the globe mapper: no layers; missing, corrupt, non-georeferenced rasters, a
+// projection the renderer does not support (EPSG:2154), contradictory georeferencing, an extent
+// outside its projection's domain, and a raster of NaN among good ones (one of them projected); a camera at the centre of the body, inside
 // it, and at NaN; a viewport without area. Each case: a clear error where it is one, no GL
 // error, no NaN in the depth buffer, no crash, and the rest of the scene still renders.
 #include "vtkConeSource.h"
 #include "vtkGlobeLayerSet.h"
 #include "vtkGlobeProjectiveGrid.h"
+#include "vtkGlobeRasterReader.h"
 #include "vtkGlobeRenderingTestHelpers.h"
+#include "vtkImageData.h"
+#include "vtkPNGWriter.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkTestErrorObserver.h"
 #include "vtk_glew.h"
@@ -16,6 +20,44 @@
 namespace
 {
 int Failures = 0;
+
+// Every error and warning message, from any object observed.
+class Collector : public vtkCommand
+{
+public:
+  static Collector* New() { return new Collector; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    if (data)
+    {
+      this->Messages.emplace_back(static_cast<const char*>(data));
+    }
+  }
+  std::vector<std::string> Messages;
+};
+
+// A small PNG with an ESRI world file (north-west pixel centre, pixel size) and a .prj naming
+// an EPSG code: the plainest way a user brings a raster in a projection.
+std::string WritePNG(const std::string& name, double x0, double y0, double pixel, int epsg,
+  const std::string& crsName)
+{
+  const std::string base = std::string(VTKGLOBE_TEMP_DIR) + "/" + name;
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(16, 16, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  std::fill_n(static_cast<unsigned char*>(image->GetScalarPointer()), 16 * 16 * 3, 200);
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName((base + ".png").c_str());
+  writer->Write();
+  std::ofstream(base + ".pgw") << pixel << "\n0\n0\n" << -pixel << "\n" << x0 << "\n" << y0 << "\n";
+  std::ofstream(base + ".prj") << "PROJCS[\"" << crsName << "\",GEOGCS[\"WGS 84\",DATUM[\"WGS_1984\","
+                                 "SPHEROID[\"WGS 84\",6378137,298.257223563]],PRIMEM[\"Greenwich\",0],"
+                                 "UNIT[\"degree\",0.0174532925199433]],UNIT[\"metre\",1],"
+                                 "AUTHORITY[\"EPSG\",\""
+                              << epsg << "\"]]";
+  return base + ".png";
+}
 
 void Expect(bool condition, const std::string& what)
 {
@@ -77,7 +119,10 @@ int TestGlobeRenderBadInput(int, char*[])
     const std::string temp = std::string(VTKGLOBE_DATA_DIR) + "/../build-temporary-not-here";
     vtkGlobeTest::Scene scene;
     vtkNew<vtkTest::ErrorObserver> errors;
+    vtkNew<Collector> all;
+    scene.Mapper->GetLayerSet()->AddObserver(vtkCommand::ErrorEvent, all);
     auto addLayer = [&](vtkSmartPointer<vtkGlobeLayer> layer) {
+      layer->AddObserver(vtkCommand::ErrorEvent, all);
       layer->AddObserver(vtkCommand::ErrorEvent, errors);
       layer->AddObserver(vtkCommand::WarningEvent, errors);
       scene.Mapper->AddLayer(layer);
@@ -87,16 +132,76 @@ int TestGlobeRenderBadInput(int, char*[])
     addLayer(vtkGlobeTest::FileLayer("earth/relief_2deg.tif", true));
     addLayer(vtkGlobeTest::FileLayer("earth/no_such_file.tif", true));
     addLayer(vtkGlobeTest::FileLayer("README.md", false)); // not an image at all
-    addLayer(vtkGlobeTest::FileLayer("earth/mt_rainier_utm10n.tif", true)); // projected
+    addLayer(vtkGlobeTest::FileLayer("earth/mt_rainier_utm10n.tif", true)); // projected, good
     addLayer(vtkGlobeTest::FileLayer("earth/world.tif", false));
+    struct Bad
+    {
+      vtkSmartPointer<vtkGlobeLayer> Layer;
+      const char* What;
+      std::vector<const char*> Words;
+    };
+    std::vector<Bad> bad;
+    auto addBad = [&](vtkSmartPointer<vtkGlobeLayer> layer, const char* what,
+                    std::vector<const char*> words) {
+      addLayer(layer);
+      bad.push_back({ layer, what, words });
+    };
+    {
+      auto lambert = vtkSmartPointer<vtkGlobeLayer>::New();
+      lambert->SetRoleToColor();
+      lambert->SetFileName(
+        WritePNG("lambert93", 700000, 6600000, 1000, 2154, "RGF93 / Lambert-93").c_str());
+      addBad(lambert, "an unsupported projection", { "lambert93.png", "EPSG:2154", "not supported" });
+      auto outside = vtkSmartPointer<vtkGlobeLayer>::New();
+      outside->SetRoleToColor();
+      outside->SetFileName(
+        WritePNG("utm_far_away", 5.0e7, 9.0e7, 1000, 32610, "WGS 84 / UTM zone 10N").c_str());
+      addBad(outside, "an extent outside its projection's domain", { "utm_far_away.png", "EPSG:32610" });
+      auto contradictory = vtkGlobeTest::FileLayer("earth/mt_rainier_utm10n.tif", true);
+      contradictory->GetFileReader()->SetEPSG(3413);
+      addBad(contradictory, "contradictory georeferencing (tags 32610, asked 3413)",
+        { "mt_rainier_utm10n.tif", "3413" });
+      auto nans = vtkSmartPointer<vtkGlobeLayer>::New();
+      std::vector<float> values(64, std::numeric_limits<float>::quiet_NaN());
+      nans->SetHeightData(8, 8, values.data(), 10, 12, 10, 12);
+      addBad(nans, "only NaN heights", { "valid" });
+    }
     const double camera[3] = { -100, 40, 2.0e7 }, target[3] = { -100, 40, 0 };
     scene.Look(camera, target, 30);
     scene.Render();
     const std::vector<float> depth = vtkGlobeTest::ReadDepth(scene.Window);
     Expect(errors->GetError(), "the bad layers are reported, e.g. \"" + Reason(errors) + "\"");
-    Expect(scene.Mapper->GetLayerSet()->GetNumberOfActiveHeightLayers() == 1 &&
+    for (const Bad& b : bad)
+    {
+      // Find the message about this layer among all those reported.
+      bool named = false;
+      std::string said;
+      for (const std::string& message : all->Messages)
+      {
+        bool all = true;
+        for (const char* word : b.Words)
+        {
+          all &= message.find(word) != std::string::npos;
+        }
+        if (all)
+        {
+          named = true;
+          const size_t at = message.find("): ");
+          said = message.substr(at == std::string::npos ? 0 : at + 3, 160);
+          while (!said.empty() && (said.back() == '\n' || said.back() == ' '))
+          {
+            said.pop_back();
+          }
+          break;
+        }
+      }
+      Expect(named && !b.Layer->IsValid() == (std::string(b.What).find("NaN") != std::string::npos ||
+                        std::string(b.What).find("contradictory") != std::string::npos),
+        std::string(b.What) + ": reported with the file and the reason" + (named ? ": " + said : ""));
+    }
+    Expect(scene.Mapper->GetLayerSet()->GetNumberOfActiveHeightLayers() == 2 &&
         scene.Mapper->GetLayerSet()->GetNumberOfActiveColorLayers() == 1,
-      "the good layers stay active (1 height, 1 colour)");
+      "the good layers stay active (2 height, one of them UTM; 1 colour)");
     Expect(vtkGlobeTest::CoveredPixels(depth) > 5000 && NoNaN(depth) && NoGLError(),
       "the globe still renders");
   }
