@@ -12,8 +12,8 @@ import sys
 import vtkmodules.vtkInteractionStyle  # noqa: F401  (the interactor's default style)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL backend)
 from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import (vtkLight, vtkRenderWindow, vtkRenderWindowInteractor,
-                                         vtkRenderer, vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkRenderWindow,
+                                         vtkRenderWindowInteractor, vtkWindowToImageFilter)
 from vtkmodules.vtkInteractionStyle import vtkInteractorStyleTrackballCamera
 
 try:
@@ -119,7 +119,6 @@ def add_sun(renderer, body, target, azimuth, elevation):
 
 def globe(body, grid):
     """The globe mapper for a body, in an actor."""
-    from vtkmodules.vtkRenderingCore import vtkActor
     mapper = vtkglobe.vtkGlobeMapper()
     mapper.SetEllipsoid(body)
     mapper.SetGridResolution(grid)

@@ -17,7 +17,7 @@ import sys
 import tempfile
 import unittest
 
-from globe_test_support import DATA, EXAMPLES, Image, file_layer, project, run_example
+from globe_test_support import EXAMPLES, Image, file_layer, project, run_example
 
 sys.path.insert(0, EXAMPLES)
 import drape_track as dt  # noqa: E402

@@ -8,7 +8,6 @@ a pixel; points it does not hide even when grown by 50 km must show it (the 50 k
 and the limb's anti-aliasing out of the question). The satellite, in front of the globe at the
 default anomaly, is drawn at its projected centre; moved to the far side it is nowhere.
 """
-import math
 import os
 import sys
 import tempfile
