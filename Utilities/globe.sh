@@ -6,6 +6,8 @@
 #   Utilities/globe.sh test [args]    build, then run the whole test suite (ctest args pass on)
 #   Utilities/globe.sh bench [args]   build, then run the benchmark (table + build/benchmark.json)
 #   Utilities/globe.sh build          install packages and build only
+#   Utilities/globe.sh python script.py [args]   build, then run a Python script with the
+#                                     build's vtkglobe package, under Xvfb when there is no display
 #
 # Environment: VTKGLOBE_BUILD_DIR (default: build/ in the source tree).
 set -euo pipefail
@@ -92,8 +94,15 @@ case "$command" in
     install_packages
     build_project
     ;;
+  python)
+    install_packages >&2
+    build_project >&2
+    # Debian's interpreter: the one VTK's Python modules are built for.
+    with_display env PYTHONPATH="$build/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}" \
+      /usr/bin/python3 "$@"
+    ;;
   *)
-    echo "usage: $0 demo|test|bench|build [args]" >&2
+    echo "usage: $0 demo|test|bench|build|python [args]" >&2
     exit 2
     ;;
 esac

@@ -1,0 +1,152 @@
+#!/usr/bin/python3
+"""Show your own GeoTIFF on the globe, with the camera framed on its extent.
+
+A 1-channel raster is drawn as terrain heights (metres), a 3- or 4-channel one as imagery
+(--role overrides). On an Earth raster the demo's relief and imagery are drawn below it; a
+raster whose GeoTIFF names another body's ellipsoid (e.g. the Moon's 1,737,400 m sphere) is
+drawn alone on that body. Geographic (longitude/latitude) rasters only, for now: reproject
+others with gdalwarp -t_srs EPSG:4326 (see Documentation/user-guide.md).
+"""
+import math
+import os
+import sys
+
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand
+from vtkmodules.vtkRenderingCore import vtkRenderer
+
+import globe_scene
+from vtkglobe import vtkGlobeEllipsoid, vtkGlobeLayer
+
+WGS84_A = 6378137.0
+
+
+class LoadError(Exception):
+    pass
+
+
+def collect_errors(obj):
+    """VTK reports through ErrorEvent; collect the messages instead of printing them."""
+    messages = []
+
+    @calldata_type(VTK_STRING)
+    def on_error(caller, event, message):
+        # VTK's text starts with "ERROR: In <file>, line <n>\nvtkGlobeLayer (0x...): ".
+        messages.append(str(message).strip().split("): ", 1)[-1])
+    obj.AddObserver(vtkCommand.ErrorEvent, on_error)
+    return messages
+
+
+def load(path, role):
+    """The user's layer, loaded; raises LoadError with a one-line reason."""
+    if not os.path.exists(path):
+        raise LoadError("%s: no such file" % path)
+    if not os.path.isfile(path):
+        raise LoadError("%s: not a file" % path)
+    with open(path, "rb") as f:
+        magic = f.read(4)
+    if magic not in (b"II*\x00", b"MM\x00*", b"II+\x00", b"MM\x00+"):
+        raise LoadError("%s: not a GeoTIFF (not a TIFF file at all)" % path)
+    layer = vtkGlobeLayer()
+    messages = collect_errors(layer)
+    layer.SetFileName(path)
+    if role == "color":
+        layer.SetRoleToColor()
+    else:
+        layer.SetRoleToHeight()
+    ok = layer.Update()
+    if not ok and role == "auto" and messages and "needs a 1-channel" in messages[-1]:
+        del messages[:]
+        layer.SetRoleToColor()  # more than one channel: imagery
+        ok = layer.Update()
+    if not ok:
+        reason = messages[-1] if messages else "unknown reason"
+        raise LoadError("%s: cannot be shown: %s" % (path, reason))
+    if layer.GetModelType() != vtkGlobeLayer.Geographic:
+        raise LoadError("%s: its map projection (EPSG:%d) is not supported yet; reproject it to "
+                        "longitude/latitude, e.g. gdalwarp -t_srs EPSG:4326 in.tif out.tif"
+                        % (path, layer.GetEPSG()))
+    return layer
+
+
+def body_for(layer):
+    """The layer's own ellipsoid when its GeoTIFF names one that is not the Earth's, else WGS84."""
+    body = vtkGlobeEllipsoid()
+    a, b = layer.GetDatumSemiMajorAxis(), layer.GetDatumSemiMinorAxis()
+    if a > 0 and b > 0 and abs(a - WGS84_A) > 1.0e4:
+        body.SetRadii(a, a, b)
+        body.SetName("from %s" % os.path.basename(layer.GetFileName()))
+    return body
+
+
+def frame(renderer, body, extent, aspect, top=0.0, view_angle=30.0):
+    """Puts the camera straight above the middle of extent (west, east, south, north; degrees)
+    so that the whole extent fits the view; top: the highest terrain (m). Returns the camera's
+    geodetic position."""
+    west, east, south, north = extent
+    lon, lat = 0.5 * (west + east), 0.5 * (south + north)
+    radius = body.GetMaximumRadius()
+    # Half sizes (m) of the extent on the ground, and the view's half angles.
+    half_ns = math.radians(north - south) / 2.0 * radius
+    half_ew = math.radians(east - west) / 2.0 * radius * math.cos(math.radians(min(abs(south), abs(north))
+                                                                           if south * north > 0 else 0.0))
+    tan_v = math.tan(math.radians(view_angle) / 2.0)
+    tan_h = tan_v * aspect
+    if north - south > 60.0 or east - west > 60.0:
+        # Too big to see from above a point: the whole body, centred on the extent.
+        altitude = radius / math.sin(math.atan(tan_v)) * 1.1 - radius
+    else:
+        altitude = 1.15 * max(half_ns / tan_v, half_ew / tan_h) + top
+    camera = (lon, lat, altitude)
+    near = max(1.0, 0.5 * (altitude - top))
+    far = 2.0 * math.sqrt((radius + altitude) ** 2 - radius ** 2) + 2.0 * altitude
+    globe_scene.look_at(renderer, body, camera, (lon, lat, 0.0), view_angle, (near, far))
+    return camera
+
+
+def build(layer, size, grid, data=globe_scene.DATA, interactive=False):
+    """Returns (window, renderer, body, camera)."""
+    body = body_for(layer)
+    mapper, actor = globe_scene.globe(body, grid)
+    if body.GetName() == "WGS84":
+        mapper.AddLayer(globe_scene.file_layer(os.path.join(data, "earth", "relief_2deg.tif"), "height"))
+        mapper.AddLayer(globe_scene.file_layer(os.path.join(data, "earth", "world.tif"), "color"))
+    mapper.AddLayer(layer)
+    renderer = vtkRenderer()
+    renderer.AddActor(actor)
+    renderer.SetBackground(0.0, 0.0, 0.0)
+    extent = [0.0] * 4
+    layer.GetGeographicExtent(extent)
+    top = layer.GetMaximumValue() if layer.GetRole() == vtkGlobeLayer.Height else 0.0
+    camera = frame(renderer, body, extent, size[0] / size[1], max(top, 0.0))
+    globe_scene.add_sun(renderer, body, (camera[0], camera[1], 0.0), 135.0, 45.0)
+    return globe_scene.window_for(renderer, size, interactive), renderer, body, camera
+
+
+def main(argv=None):
+    parser = globe_scene.arguments(__doc__.splitlines()[0], "geotiff.png")
+    parser.description = __doc__
+    parser.formatter_class = __import__("argparse").RawDescriptionHelpFormatter
+    parser.add_argument("geotiff", help="the GeoTIFF file to show")
+    parser.add_argument("--role", choices=("auto", "height", "color"), default="auto",
+                        help="heights or imagery (default: auto, from the channel count)")
+    args = parser.parse_args(argv)
+    size = globe_scene.parse_size(parser, args.size)
+    try:
+        layer = load(args.geotiff, args.role)
+    except LoadError as error:
+        print("error: %s" % error, file=sys.stderr)
+        return 1
+    extent = [0.0] * 4
+    layer.GetGeographicExtent(extent)
+    print("%s: %dx%d %s raster, lon [%.6f, %.6f], lat [%.6f, %.6f]" % (
+        args.geotiff, layer.GetWidth(), layer.GetHeight(), layer.GetRoleAsString().lower(), *extent))
+    globe_scene.require_display()
+    window, _, body, camera = build(layer, size, args.grid, args.data, args.interactive)
+    print("body %s; camera at lon %.4f lat %.4f, %.0f m up" % (body.GetName(), *camera))
+    globe_scene.show(window, args.out, args.interactive)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
