@@ -11,6 +11,7 @@ set(globe_rendering_tests
   TestGlobeMapProjectionGPU.cxx
   TestGlobeMoon.cxx
   TestGlobeNadir.cxx
+  TestGlobeProjectedLayers.cxx
   TestGlobeRainier.cxx
   TestGlobeRedundantWork.cxx
   TestGlobeRenderBadInput.cxx

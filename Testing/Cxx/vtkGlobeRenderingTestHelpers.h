@@ -9,6 +9,7 @@
 #include "vtkGlobeDepthPass.h"
 #include "vtkGlobeEllipsoid.h"
 #include "vtkGlobeLayer.h"
+#include "vtkGlobeMapProjection.h"
 #include "vtkGlobeMapper.h"
 #include "vtkGlobeProjectiveGrid.h"
 #include "vtkNew.h"
@@ -20,6 +21,7 @@
 #include "vtkTextureObject.h"
 
 #include <cmath>
+#include <map>
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -179,20 +181,48 @@ struct Scene
   }
 };
 
+/// A layer's texture coordinates (u east, v south, [0, 1] over the outer pixel edges) at
+/// (lon, lat) in degrees, in double: geographic layers directly, projected ones through
+/// vtkGlobeMapProjection (GeographicLib). False where the projection is undefined.
+inline bool LayerUV(vtkGlobeLayer* layer, double lon, double lat, double& u, double& v)
+{
+  if (layer->GetModelType() == vtkGlobeLayer::Projected)
+  {
+    static std::map<int, vtkSmartPointer<vtkGlobeMapProjection>> projections;
+    auto& projection = projections[layer->GetEPSG()];
+    if (!projection)
+    {
+      projection = vtkSmartPointer<vtkGlobeMapProjection>::New();
+      projection->SetFromEPSG(layer->GetEPSG());
+    }
+    double xy[2], origin[2], pixel[2];
+    if (!projection->IsInValidDomain(lon, lat) || !projection->Forward(lon, lat, xy))
+    {
+      return false;
+    }
+    layer->GetProjectedGeoTransform(origin, pixel);
+    u = (xy[0] - origin[0]) / (pixel[0] * layer->GetWidth());
+    v = (origin[1] - xy[1]) / (pixel[1] * layer->GetHeight());
+    return true;
+  }
+  double e[4];
+  layer->GetGeographicExtent(e);
+  u = std::fmod(lon - e[0] + 720.0, 360.0) / (e[1] - e[0]);
+  v = (e[3] - lat) / (e[3] - e[2]);
+  return true;
+}
+
 /// A height layer's value at (lon, lat) in degrees as the GPU samples it at level 0: bilinear
 /// between texel centres, clamped at the edges, wrapped in longitude for global layers.
 /// Returns false outside the layer.
 inline bool SampleHeight(vtkGlobeLayer* layer, double lon, double lat, double& value)
 {
-  double e[4];
-  layer->GetGeographicExtent(e);
-  const int w = layer->GetWidth(), h = layer->GetHeight();
-  double u = std::fmod(lon - e[0] + 720.0, 360.0) / (e[1] - e[0]);
-  const double v = (e[3] - lat) / (e[3] - e[2]);
-  if (u < 0 || u > 1 || v < 0 || v > 1)
+  double u, v;
+  if (!LayerUV(layer, lon, lat, u, v) || u < 0 || u > 1 || v < 0 || v > 1)
   {
     return false;
   }
+  const int w = layer->GetWidth(), h = layer->GetHeight();
   vtkDataArray* data = layer->GetData();
   const bool wrap = layer->IsGlobal();
   auto at = [&](int i, int j) {
@@ -236,6 +266,13 @@ inline double FinestTexel(const std::vector<vtkGlobeLayer*>& layers, double lon,
     if (layer->GetRole() == vtkGlobeLayer::Height && layer->IsValid() &&
       SampleHeight(layer, lon, lat, value))
     {
+      if (layer->GetModelType() == vtkGlobeLayer::Projected)
+      {
+        double origin[2], pixel[2];
+        layer->GetProjectedGeoTransform(origin, pixel);
+        best = std::min(best, std::min(pixel[0], pixel[1]));
+        continue;
+      }
       double e[4];
       layer->GetGeographicExtent(e);
       best = std::min(best, (e[3] - e[2]) / layer->GetHeight() * radius * 3.14159265358979 / 180.0);
@@ -248,13 +285,15 @@ inline double FinestTexel(const std::vector<vtkGlobeLayer*>& layers, double lon,
 /// border, as the generated GLSL computes it, before opacity and data validity.
 inline double CoverageWeight(vtkGlobeLayer* layer, double lon, double lat)
 {
-  double e[4];
-  layer->GetGeographicExtent(e);
-  const double u = std::fmod(lon - e[0] + 720.0, 360.0) / (e[1] - e[0]);
-  const double v = (e[3] - lat) / (e[3] - e[2]);
-  if (u < 0 || u > 1 || v < 0 || v > 1)
+  double u, v;
+  if (!LayerUV(layer, lon, lat, u, v) || u < 0 || u > 1 || v < 0 || v > 1)
   {
     return 0.0;
+  }
+  double e[4] = { 0, 0, 0, 0 };
+  if (layer->GetModelType() == vtkGlobeLayer::Geographic)
+  {
+    layer->GetGeographicExtent(e);
   }
   double w = 1.0;
   const double feather = layer->GetFeatherWidth();

@@ -1,0 +1,416 @@
+// Layers in several map projections composed per pixel (issue: composition of projections):
+//  A. Rainier in geographic coordinates and the same SRTM tile re-projected to UTM 10N: each
+//     alone renders the terrain of its data (every pixel within its bound, the CPU mirror
+//     projecting with GeographicLib), and the two registrations agree: the height difference
+//     of the two renders, pixel by pixel, is no larger than the difference of the two data
+//     sets themselves at the same points (the re-projection's own interpolation error).
+//  B. The global imagery (equirectangular) and the north polar cap (EPSG:3413 polar
+//     stereographic): the two register to a fraction of a pixel (best shift of the cap's image
+//     against the base's in the ring both cover), and their composition has no seam (every
+//     pixel lies between the two layers' colours) and no polar pinch (near the pole it is the
+//     cap). Regression baseline: the composition.
+//  C. A synthetic planet seen through three projections at different resolutions (Kooima's
+//     test): nearest-filtered checkerboards in equirectangular, polar stereographic and UTM,
+//     each texel a different colour; every pixel shows the texel the exact projection (CPU,
+//     GeographicLib) puts there, except within a margin of texel edges.
+#include "vtkGlobeRenderingTestHelpers.h"
+
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkGlobeLayerSet.h"
+#include "vtkGlobeRasterReader.h"
+#include "vtkImageData.h"
+#include "vtkIntArray.h"
+#include "vtkPointData.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cstdio>
+
+namespace
+{
+bool ok = true;
+void Expect(bool condition, const std::string& what)
+{
+  std::printf("  %-4s %s\n", condition ? "ok" : "FAIL", what.c_str());
+  ok &= condition;
+}
+
+std::vector<unsigned char> Pixels(vtkRenderWindow* window)
+{
+  const int* size = window->GetSize();
+  unsigned char* data = window->GetPixelData(0, 0, size[0] - 1, size[1] - 1, 0);
+  std::vector<unsigned char> rgb(data, data + 3 * size[0] * size[1]);
+  delete[] data;
+  return rgb;
+}
+
+// Depth-reconstructed geodetic position of every pixel (NaN where nothing is drawn).
+std::vector<std::array<double, 3>> Geodetic(vtkGlobeTest::Scene& scene)
+{
+  const int* size = scene.Window->GetSize();
+  const std::vector<float> depth = vtkGlobeTest::ReadDepth(scene.Window);
+  std::vector<std::array<double, 3>> llh(depth.size(), { NAN, NAN, NAN });
+  for (int y = 0; y < size[1]; ++y)
+  {
+    for (int x = 0; x < size[0]; ++x)
+    {
+      const size_t i = static_cast<size_t>(y) * size[0] + x;
+      if (depth[i] < 1.0f)
+      {
+        double p[3];
+        vtkGlobeTest::UnprojectPixel(scene.Renderer, x + 0.5, y + 0.5, depth[i], p);
+        scene.Body->CartesianToGeodetic(p, llh[i].data());
+      }
+    }
+  }
+  return llh;
+}
+
+// An in-memory projected RGB raster: colour(i, j) for column i (east) and row j (north
+// first), its north-west outer corner and pixel size in metres, as a reader would give it.
+vtkSmartPointer<vtkGlobeLayer> ProjectedImage(int epsg, int w, int h, double west, double north,
+  double pixel, const std::function<std::array<unsigned char, 3>(int, int)>& colour)
+{
+  vtkNew<vtkImageData> image;
+  image->SetExtent(0, w - 1, 0, h - 1, 0, 0);
+  image->SetSpacing(pixel, pixel, 1.0);
+  image->SetOrigin(west + 0.5 * pixel, north - (h - 0.5) * pixel, 0.0);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* scalars = vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars());
+  for (int j = 0; j < h; ++j)
+  {
+    for (int i = 0; i < w; ++i)
+    {
+      const auto c = colour(i, j);
+      const vtkIdType id = static_cast<vtkIdType>(h - 1 - j) * w + i; // VTK rows: south first
+      for (int k = 0; k < 3; ++k)
+      {
+        scalars->SetComponent(id, k, c[k]);
+      }
+    }
+  }
+  vtkNew<vtkIntArray> model, code;
+  model->SetName(vtkGlobeRasterReader::GetModelTypeArrayName());
+  model->InsertNextValue(vtkGlobeRasterReader::Projected);
+  code->SetName(vtkGlobeRasterReader::GetEPSGArrayName());
+  code->InsertNextValue(epsg);
+  vtkNew<vtkDoubleArray> transform;
+  transform->SetName(vtkGlobeRasterReader::GetGeoTransformArrayName());
+  for (double v : { west, north, pixel, pixel })
+  {
+    transform->InsertNextValue(v);
+  }
+  image->GetFieldData()->AddArray(model);
+  image->GetFieldData()->AddArray(code);
+  image->GetFieldData()->AddArray(transform);
+  auto layer = vtkSmartPointer<vtkGlobeLayer>::New();
+  layer->SetRoleToColor();
+  layer->SetInputData(image);
+  layer->SetFeatherWidth(0.0);
+  layer->SetInterpolationToNearest();
+  return layer;
+}
+
+// Distinct colours for neighbouring texels (a hash), so a misregistration by one texel shows.
+std::array<unsigned char, 3> TexelColour(int layer, int i, int j)
+{
+  unsigned int hsh = static_cast<unsigned int>(i) * 73856093u ^
+    static_cast<unsigned int>(j) * 19349663u ^ static_cast<unsigned int>(layer) * 83492791u;
+  hsh *= 2654435761u;
+  return { static_cast<unsigned char>(40 + (hsh >> 24) % 200),
+    static_cast<unsigned char>(40 + (hsh >> 16) % 200), static_cast<unsigned char>(40 + (hsh >> 8) % 200) };
+}
+
+void PartRainier()
+{
+  std::printf("A. Rainier, geographic and UTM 10N:\n");
+  const double camera[3] = { -121.86, 46.75, 16000.0 }, target[3] = { -121.7603, 46.8523, 4392.0 };
+  auto render = [&](bool geographic, bool utm, vtkGlobeTest::Scene& scene) {
+    scene.Mapper->AddLayer(vtkGlobeTest::FileLayer("earth/relief_2deg.tif", true));
+    if (geographic)
+    {
+      scene.Mapper->AddLayer(vtkGlobeTest::FileLayer("earth/mt_rainier_90m.tif", true));
+    }
+    if (utm)
+    {
+      scene.Mapper->AddLayer(vtkGlobeTest::FileLayer("earth/mt_rainier_utm10n.tif", true));
+    }
+    scene.Look(camera, target, 40.0, 100.0, 1.0e6);
+    scene.Render();
+  };
+  vtkGlobeTest::Scene geo, utm, both;
+  render(true, false, geo);
+  render(false, true, utm);
+  render(true, true, both);
+  for (auto* s : { &geo, &utm, &both })
+  {
+    const vtkGlobeTest::TerrainCheck check = vtkGlobeTest::CheckTerrain(*s, 2);
+    char what[200];
+    std::snprintf(what, sizeof(what),
+      "%s: %d pixels, median |dh| %.2f m, worst/bound %.2f, %d beyond, %d NaN",
+      s == &geo ? "geographic alone" : (s == &utm ? "UTM alone" : "both composed"), check.Pixels,
+      check.MedianError, check.WorstRatio, check.Failures, check.NaNs);
+    Expect(check.Pixels > 10000 && check.Failures == 0 && check.NaNs == 0, what);
+  }
+  Expect(utm.Mapper->GetLayerSet()->GetNumberOfActiveHeightLayers() == 2,
+    "the UTM layer is active (composed, not refused)");
+
+  // Registration, seen almost straight down with a narrow view (so a height difference barely
+  // moves where a ray meets the ground): the rendered height differences pixel by pixel against
+  // the two data sets' own differences at the same points.
+  const double above[3] = { -121.7603, 46.8423, 30000.0 }, summit[3] = { -121.7603, 46.8523, 0.0 };
+  for (auto* s : { &geo, &utm })
+  {
+    s->Look(above, summit, 15.0, 1000.0, 1.0e5);
+    s->Render();
+  }
+  const auto a = Geodetic(geo), b = Geodetic(utm);
+  vtkGlobeLayer* geoLayer = geo.Mapper->GetLayer(1);
+  vtkGlobeLayer* utmLayer = utm.Mapper->GetLayer(1);
+  double rendered = 0.0, data = 0.0, halfPost = 0.0;
+  int n = 0;
+  for (size_t i = 0; i < a.size(); i += 3)
+  {
+    double hg, hu, hs;
+    if (std::isnan(a[i][0]) || std::isnan(b[i][0]) ||
+      !vtkGlobeTest::SampleHeight(geoLayer, a[i][0], a[i][1], hg) ||
+      !vtkGlobeTest::SampleHeight(utmLayer, a[i][0], a[i][1], hu) ||
+      !vtkGlobeTest::SampleHeight(geoLayer, a[i][0] + 1.0 / 1200.0, a[i][1], hs) ||
+      vtkGlobeTest::CoverageWeight(geoLayer, a[i][0], a[i][1]) < 1.0 ||
+      vtkGlobeTest::CoverageWeight(utmLayer, a[i][0], a[i][1]) < 1.0)
+    {
+      continue;
+    }
+    // The same pixel's two renders: heights along the same ray differ by the terrain's.
+    rendered += (a[i][2] - b[i][2]) * (a[i][2] - b[i][2]);
+    data += (hg - hu) * (hg - hu);
+    halfPost += (hg - hs) * (hg - hs);
+    ++n;
+  }
+  rendered = std::sqrt(rendered / n);
+  data = std::sqrt(data / n);
+  halfPost = std::sqrt(halfPost / n);
+  char what[240];
+  std::snprintf(what, sizeof(what),
+    "%d pixels: RMS height difference of the renders %.2f m; of the two data sets at the same "
+    "points %.2f m (the data shifted by one 90 m post: %.2f m)",
+    n, rendered, data, halfPost);
+  Expect(n > 5000 && rendered <= 1.25 * data + 1.0 && data < halfPost, what);
+}
+
+void PartPolarCap(int argc, char* argv[], bool& imageOk)
+{
+  std::printf("B. Global imagery and the EPSG:3413 polar cap:\n");
+  vtkGlobeTest::Scene scene;
+  scene.Mapper->LightingOff();
+  auto base = vtkGlobeTest::FileLayer("earth/world.tif", false);
+  auto cap = vtkGlobeTest::FileLayer("earth/world_north_polar_3413.tif", false);
+  scene.Mapper->AddLayer(base);
+  scene.Mapper->AddLayer(cap);
+  const double camera[3] = { -45.0, 62.0, 4.0e6 }, target[3] = { -45.0, 85.0, 0.0 };
+  scene.Look(camera, target, 45.0);
+  const int uploads0 = scene.Mapper->GetLayerSet()->GetNumberOfUploads();
+  cap->EnabledOff();
+  scene.Render();
+  const auto imageBase = Pixels(scene.Window);
+  cap->EnabledOn();
+  base->EnabledOff();
+  scene.Render();
+  const auto imageCap = Pixels(scene.Window);
+  base->EnabledOn();
+  scene.Render();
+  const auto imageBoth = Pixels(scene.Window);
+  const auto llh = Geodetic(scene);
+  Expect(scene.Mapper->GetLayerSet()->GetNumberOfUploads() - uploads0 == 2,
+    "enabling and disabling layers re-uploads nothing (2 uploads in all)");
+
+  const int* size = scene.Window->GetSize();
+  const int w = size[0], h = size[1];
+  // Ring both cover well inside: 62..72 N. Best integer shift, then a parabola for sub-pixel.
+  auto sad = [&](int sx, int sy) {
+    double sum = 0.0;
+    int count = 0;
+    for (int y = 4; y < h - 4; ++y)
+    {
+      for (int x = 4; x < w - 4; ++x)
+      {
+        const size_t i = static_cast<size_t>(y) * w + x;
+        if (std::isnan(llh[i][1]) || llh[i][1] < 62.0 || llh[i][1] > 72.0)
+        {
+          continue;
+        }
+        const size_t j = static_cast<size_t>(y + sy) * w + (x + sx);
+        for (int k = 0; k < 3; ++k)
+        {
+          sum += std::abs(imageBase[3 * i + k] - imageCap[3 * j + k]);
+        }
+        ++count;
+      }
+    }
+    return count ? sum / count : 1e30;
+  };
+  int bx = 0, by = 0;
+  double best = 1e30;
+  for (int sy = -3; sy <= 3; ++sy)
+  {
+    for (int sx = -3; sx <= 3; ++sx)
+    {
+      const double v = sad(sx, sy);
+      if (v < best)
+      {
+        best = v;
+        bx = sx;
+        by = sy;
+      }
+    }
+  }
+  auto refine = [&](double m, double c, double p) {
+    const double d = m - 2 * c + p;
+    return d > 0 ? 0.5 * (m - p) / d : 0.0;
+  };
+  const double fx = bx + refine(sad(bx - 1, by), best, sad(bx + 1, by));
+  const double fy = by + refine(sad(bx, by - 1), best, sad(bx, by + 1));
+  char what[200];
+  std::snprintf(what, sizeof(what),
+    "registration of the cap against the base in 62..72 N: shift (%.2f, %.2f) px, mean |diff| %.1f",
+    fx, fy, best);
+  Expect(std::hypot(fx, fy) < 0.5, what);
+
+  // No seam: every covered pixel lies between the two layers' colours (a hole or a line of
+  // base colour would not).
+  int covered = 0, outside = 0, nearPole = 0, poleMismatch = 0;
+  for (size_t i = 0; i < llh.size(); ++i)
+  {
+    if (std::isnan(llh[i][0]))
+    {
+      continue;
+    }
+    ++covered;
+    for (int k = 0; k < 3; ++k)
+    {
+      const int lo = std::min(imageBase[3 * i + k], imageCap[3 * i + k]) - 2;
+      const int hi = std::max(imageBase[3 * i + k], imageCap[3 * i + k]) + 2;
+      if (imageBoth[3 * i + k] < lo || imageBoth[3 * i + k] > hi)
+      {
+        ++outside;
+        break;
+      }
+    }
+    if (llh[i][1] > 85.0)
+    {
+      ++nearPole;
+      poleMismatch += std::abs(imageBoth[3 * i] - imageCap[3 * i]) > 2;
+    }
+  }
+  // (A pixel may round differently at a layer's anti-aliased edge: allow 1 in 10,000.)
+  std::snprintf(what, sizeof(what), "no seam: %d of %d pixels outside the two layers' colours", outside, covered);
+  Expect(covered > 20000 && outside <= covered / 10000, what);
+  std::snprintf(what, sizeof(what), "no pinch: %d of %d pixels above 85 N differ from the cap", poleMismatch, nearPole);
+  Expect(nearPole > 500 && poleMismatch == 0, what);
+  imageOk = vtkRegressionTestImageThreshold(scene.Window, 0.05) == vtkTesting::PASSED;
+}
+
+void PartSynthetic()
+{
+  std::printf("C. A synthetic planet through three projections (nearest-filtered texels):\n");
+  vtkGlobeTest::Scene scene;
+  scene.Mapper->LightingOff();
+  // Equirectangular base: 2-degree texels.
+  auto equirect = vtkSmartPointer<vtkGlobeLayer>::New();
+  {
+    std::vector<unsigned char> rgb;
+    for (int j = 0; j < 90; ++j)
+    {
+      for (int i = 0; i < 180; ++i)
+      {
+        const auto c = TexelColour(0, i, j);
+        rgb.insert(rgb.end(), { c[0], c[1], c[2] });
+      }
+    }
+    equirect->SetColorData(180, 90, 3, rgb.data(), -180, 180, -90, 90);
+    equirect->SetFeatherWidth(0.0);
+    equirect->SetInterpolationToNearest();
+  }
+  // Polar stereographic north (EPSG:3413), 100 km texels over +-1,500 km.
+  auto polar = ProjectedImage(3413, 30, 30, -1.5e6, 1.5e6, 1.0e5,
+    [](int i, int j) { return TexelColour(1, i, j); });
+  // UTM 33N, 25 km texels, 500 x 1,000 km from (250 km E, 5,500 km N).
+  auto utm = ProjectedImage(32633, 20, 40, 250000.0, 6.5e6, 25000.0,
+    [](int i, int j) { return TexelColour(2, i, j); });
+  scene.Mapper->AddLayer(equirect);
+  scene.Mapper->AddLayer(polar);
+  scene.Mapper->AddLayer(utm);
+  vtkGlobeLayer* layers[3] = { equirect, polar, utm };
+
+  struct ViewPoint
+  {
+    double Camera[3], Target[3];
+  };
+  const ViewPoint views[] = { { { 15.0, 40.0, 3.0e6 }, { 15.0, 53.0, 0.0 } },
+    { { 0.0, 70.0, 2.5e6 }, { 0.0, 86.0, 0.0 } }, { { 170.0, 60.0, 4.0e6 }, { 178.0, 80.0, 0.0 } } };
+  int checked = 0, wrong = 0, perLayer[3] = { 0, 0, 0 };
+  for (const ViewPoint& v : views)
+  {
+    scene.Look(v.Camera, v.Target, 40.0);
+    scene.Render();
+    const auto image = Pixels(scene.Window);
+    const auto llh = Geodetic(scene);
+    for (size_t p = 0; p < llh.size(); ++p)
+    {
+      if (std::isnan(llh[p][0]))
+      {
+        continue;
+      }
+      // The top layer covering the point, and its texel; skip points near a texel edge (the
+      // mesh and depth put a pixel's point a little off its true ground position).
+      int top = -1, ti = 0, tj = 0;
+      bool edge = false;
+      for (int l = 2; l >= 0 && top < 0; --l)
+      {
+        double u, vv;
+        if (!vtkGlobeTest::LayerUV(layers[l], llh[p][0], llh[p][1], u, vv) || u < 0 || u >= 1 ||
+          vv < 0 || vv >= 1)
+        {
+          continue;
+        }
+        const double x = u * layers[l]->GetWidth(), y = vv * layers[l]->GetHeight();
+        const double margin = 0.03;
+        edge = x - std::floor(x) < margin || std::ceil(x) - x < margin || y - std::floor(y) < margin ||
+          std::ceil(y) - y < margin;
+        top = l;
+        ti = static_cast<int>(x);
+        tj = static_cast<int>(y);
+      }
+      if (top < 0 || edge)
+      {
+        continue;
+      }
+      const auto c = TexelColour(top, ti, tj);
+      ++checked;
+      ++perLayer[top];
+      bool same = true;
+      for (int k = 0; k < 3; ++k)
+      {
+        same &= std::abs(image[3 * p + k] - c[k]) <= 2;
+      }
+      wrong += !same;
+    }
+  }
+  char what[200];
+  std::snprintf(what, sizeof(what),
+    "%d pixels (equirectangular %d, polar %d, UTM %d): %d show another texel than the exact "
+    "projection's", checked, perLayer[0], perLayer[1], perLayer[2], wrong);
+  Expect(perLayer[0] > 2000 && perLayer[1] > 2000 && perLayer[2] > 2000 && wrong == 0, what);
+}
+} // namespace
+
+int TestGlobeProjectedLayers(int argc, char* argv[])
+{
+  PartRainier();
+  bool image = true;
+  PartPolarCap(argc, argv, image);
+  PartSynthetic();
+  std::printf("%s\n", ok ? "numeric checks passed" : "numeric checks FAILED");
+  return ok && image ? 0 : 1;
+}
