@@ -201,6 +201,18 @@ vtkGlobeCompositePass* vtkGlobeMapper::GetCompositePass()
   return this->Internals->Composite;
 }
 
+// --- hard cases: G-buffer access for tests
+vtkTextureObject* vtkGlobeMapper::GetGBufferTexture()
+{
+  return this->Internals->GBuffer;
+}
+
+vtkTextureObject* vtkGlobeMapper::GetGBufferDepthTexture()
+{
+  return this->Internals->GDepth;
+}
+// --- end hard cases
+
 double vtkGlobeMapper::GetRasterTime()
 {
   return vtkOpenGLRenderTimer::IsSupported()

@@ -45,6 +45,7 @@ class vtkGlobeGridPass;
 class vtkGlobeLayer;
 class vtkGlobeLayerSet;
 class vtkGlobeProjectiveGrid;
+class vtkTextureObject;
 
 class VTKGLOBERENDERING_EXPORT vtkGlobeMapper : public vtkOpenGLPolyDataMapper
 {
@@ -120,6 +121,13 @@ public:
   vtkGlobeProjectiveGrid* GetProjectiveGrid();
   vtkGlobeGridPass* GetGridPass();
   vtkGlobeCompositePass* GetCompositePass();
+  ///@}
+
+  ///@{
+  /// The last frame's G-buffer (window-sized: direction + height, and its depth), for tests
+  /// that read every texel back (hard cases: no NaN anywhere); nullptr before the first frame.
+  vtkTextureObject* GetGBufferTexture();
+  vtkTextureObject* GetGBufferDepthTexture();
   ///@}
 
   /// True when the last frame's primary sphere came from the GPU min reduction (false: fallback).

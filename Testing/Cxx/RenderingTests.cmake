@@ -23,6 +23,17 @@ list(APPEND globe_rendering_tests
   TestGlobeClippingRange.cxx
   TestGlobeDepthModes.cxx)
 
+# Hard cases (issue 5, Documentation/depth.md "Hard cases"): each scene in both depth modes.
+list(APPEND globe_rendering_tests
+  TestGlobeEverestSummit.cxx
+  TestGlobeNorthPole.cxx
+  TestGlobeNadirLow.cxx
+  TestGlobeVeryFar.cxx
+  TestGlobeMoonSurface.cxx
+  TestGlobeDeadSea.cxx
+  TestGlobeInsideBody.cxx
+  TestGlobePGMErrata.cxx)
+
 create_test_sourcelist(_globe_rendering_driver_sources GlobeRenderingCxxTests.cxx
   ${globe_rendering_tests}
   EXTRA_INCLUDE vtkTestDriver.h)

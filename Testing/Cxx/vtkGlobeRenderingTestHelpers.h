@@ -6,7 +6,9 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
+#include "vtkGlobeClippingRange.h"
 #include "vtkGlobeDepthPass.h"
+#include "vtkGlobeGridPass.h"
 #include "vtkGlobeEllipsoid.h"
 #include "vtkGlobeLayer.h"
 #include "vtkGlobeMapProjection.h"
@@ -16,15 +18,21 @@
 #include "vtkSmartPointer.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPixelBufferObject.h"
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkTextureObject.h"
+#include "vtk_glew.h"
 
 #include <cmath>
 #include <map>
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -652,6 +660,314 @@ inline int CoveredPixels(const std::vector<float>& depth)
     n += d < 1.0f ? 1 : 0;
   }
   return n;
+}
+//------------------------------------------------------------------------------
+// Hard cases (Documentation/depth.md, "Hard cases"): a scene run in each depth mode, checked
+// for GL errors, NaN in every texel the globe wrote, and terrain within CheckTerrain's bound.
+
+/// NaN values in a float buffer.
+inline int CountNaN(const std::vector<float>& values)
+{
+  int n = 0;
+  for (float v : values)
+  {
+    n += std::isnan(v) ? 1 : 0;
+  }
+  return n;
+}
+
+/// True when OpenGL reports no error (drains the error queue).
+inline bool NoGLError()
+{
+  bool ok = true;
+  while (glGetError() != GL_NO_ERROR)
+  {
+    ok = false;
+  }
+  return ok;
+}
+
+/// The ray's height over the composed terrain at eye distance s (m).
+inline double RayHeightOverTerrain(vtkGlobeEllipsoid* body, const std::vector<vtkGlobeLayer*>& layers,
+  const double eye[3], const double ray[3], double s)
+{
+  const double p[3] = { eye[0] + s * ray[0], eye[1] + s * ray[1], eye[2] + s * ray[2] };
+  double llh[3];
+  body->CartesianToGeodeticQuiet(p, llh);
+  return llh[2] - ComposedHeight(layers, llh[0], llh[1]);
+}
+
+/// The exact ray/terrain intersection (double, the composed data): marched in steps of
+/// `relativeStep` of the distance (at least `minimumStep` m), then bisected. -1 when none
+/// within tMax.
+inline double RayTerrainHit(vtkGlobeEllipsoid* body, const std::vector<vtkGlobeLayer*>& layers,
+  const double eye[3], const double ray[3], double tMax, double minimumStep = 0.05,
+  double relativeStep = 0.001)
+{
+  double previous = 0.0;
+  for (double s = minimumStep; s < tMax; s += std::max(minimumStep, relativeStep * s))
+  {
+    if (RayHeightOverTerrain(body, layers, eye, ray, s) < 0.0)
+    {
+      double lo = previous, hi = s;
+      for (int i = 0; i < 60; ++i)
+      {
+        const double mid = 0.5 * (lo + hi);
+        (RayHeightOverTerrain(body, layers, eye, ray, mid) < 0.0 ? hi : lo) = mid;
+      }
+      return 0.5 * (lo + hi);
+    }
+    previous = s;
+  }
+  return -1.0;
+}
+
+/// Eye distance of a ray's first hit with a box (centre, unit axes as rows, half side), or -1.
+inline double RayBoxHit(const double centre[3], const double axes[3][3], double half,
+  const double eye[3], const double ray[3])
+{
+  double t0 = 0, t1 = 1e300;
+  for (int a = 0; a < 3; ++a)
+  {
+    double p = 0, d = 0;
+    for (int i = 0; i < 3; ++i)
+    {
+      p += (eye[i] - centre[i]) * axes[a][i];
+      d += ray[i] * axes[a][i];
+    }
+    if (std::abs(d) < 1e-15)
+    {
+      if (std::abs(p) > half)
+      {
+        return -1;
+      }
+      continue;
+    }
+    double ta = (-half - p) / d, tb = (half - p) / d;
+    if (ta > tb)
+    {
+      std::swap(ta, tb);
+    }
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+  }
+  return t0 <= t1 && t0 > 0 ? t0 : -1;
+}
+
+/// Eye distance of a ray's first hit with a sphere, or -1.
+inline double RaySphereHit(const double centre[3], double radius, const double eye[3], const double ray[3])
+{
+  const double rel[3] = { eye[0] - centre[0], eye[1] - centre[1], eye[2] - centre[2] };
+  const double b = rel[0] * ray[0] + rel[1] * ray[1] + rel[2] * ray[2];
+  const double c = rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2] - radius * radius;
+  const double disc = b * b - c;
+  if (disc < 0)
+  {
+    return -1;
+  }
+  const double t = -b - std::sqrt(disc);
+  return t > 0 ? t : -1;
+}
+
+/// What one hard-case frame gave.
+struct HardCaseResult
+{
+  TerrainCheck Terrain;
+  int DepthNaN = 0;          // in the window's depth buffer
+  int GBufferNaN = 0;        // in the G-buffer (direction, height) and its depth
+  int GridNaN = 0;           // in the PGM textures (direction, position, height)
+  bool GLOk = true;
+  double Nearest = 0.0;      // nearest and farthest depth-reconstructed terrain (m from the eye)
+  double Farthest = 0.0;
+  double NearPlane = 0.0, FarPlane = 0.0;
+};
+
+/**
+ * Checks the frame just rendered: no GL error; no NaN in the window's depth, the globe's
+ * G-buffer and its PGM textures; the terrain from depth (read in the pass's mode) within
+ * CheckTerrain's bound. Prints one line per mode with the clipping range, the nearest and
+ * farthest terrain distances and the worst error / bound.
+ */
+inline HardCaseResult CheckHardCase(Scene& scene, vtkGlobeDepthPass* pass, int stride)
+{
+  HardCaseResult r;
+  r.GLOk = NoGLError();
+  vtkCamera* camera = scene.Renderer->GetActiveCamera();
+  camera->GetClippingRange(r.NearPlane, r.FarPlane);
+  const std::vector<float> depth = ReadDepth(scene.Window);
+  r.DepthNaN = CountNaN(depth);
+  if (vtkTextureObject* g = scene.Mapper->GetGBufferTexture())
+  {
+    r.GBufferNaN += CountNaN(ReadTexture(g));
+  }
+  if (vtkTextureObject* g = scene.Mapper->GetGBufferDepthTexture())
+  {
+    r.GBufferNaN += CountNaN(ReadTexture(g));
+  }
+  vtkGlobeGridPass* grid = scene.Mapper->GetGridPass();
+  for (vtkTextureObject* t :
+    { grid->GetDirectionTexture(), grid->GetPositionTexture(), grid->GetHeightTexture() })
+  {
+    r.GridNaN += t ? CountNaN(ReadTexture(t)) : 0;
+  }
+  r.GLOk = NoGLError() && r.GLOk;
+  const int* size = scene.Window->GetSize();
+  const double* eye = camera->GetPosition();
+  r.Nearest = 1e300;
+  for (int y = 0; y < size[1]; ++y)
+  {
+    for (int x = 0; x < size[0]; ++x)
+    {
+      const float d = depth[static_cast<size_t>(y) * size[0] + x];
+      if (d < 1.0f)
+      {
+        double p[3];
+        UnprojectPixel(scene.Renderer, x + 0.5, y + 0.5, pass->GetPerspectiveDepth(d, camera), p);
+        const double t = std::sqrt((p[0] - eye[0]) * (p[0] - eye[0]) +
+          (p[1] - eye[1]) * (p[1] - eye[1]) + (p[2] - eye[2]) * (p[2] - eye[2]));
+        r.Nearest = std::min(r.Nearest, t);
+        r.Farthest = std::max(r.Farthest, t);
+      }
+    }
+  }
+  if (stride > 0) // 0: no terrain check (scenes whose depth is not the terrain's)
+  {
+    r.Terrain = CheckTerrain(scene, stride, pass);
+  }
+  std::printf("  %-11s clip [%.4g, %.4g] m, terrain seen %.4g .. %.4g m: worst/bound %.3f "
+              "(worst %.3g m), NaN: depth %d, G-buffer %d, grid %d; GL %s\n",
+    vtkGlobeDepthPass::GetModeAsString(pass->GetMode()), r.NearPlane, r.FarPlane,
+    r.Nearest < 1e299 ? r.Nearest : 0.0, r.Farthest, r.Terrain.WorstRatio, r.Terrain.WorstError,
+    r.DepthNaN, r.GBufferNaN, r.GridNaN, r.GLOk ? "ok" : "ERROR");
+  return r;
+}
+
+/// The usual verdict of a hard case: GL clean, no NaN anywhere, every checked pixel within
+/// its bound, at least `minimumPixels` checked.
+inline bool HardCasePassed(const HardCaseResult& r, int minimumPixels)
+{
+  return r.GLOk && r.DepthNaN == 0 && r.GBufferNaN == 0 && r.GridNaN == 0 &&
+    r.Terrain.NaNs == 0 && r.Terrain.Failures == 0 && r.Terrain.Pixels >= minimumPixels;
+}
+
+/// A depth pass in a mode, set on the scene's renderer with the clipping policy installed.
+inline vtkSmartPointer<vtkGlobeDepthPass> UseDepthMode(Scene& scene, int mode)
+{
+  auto pass = vtkSmartPointer<vtkGlobeDepthPass>::New();
+  pass->SetMode(mode);
+  scene.Renderer->SetPass(pass);
+  vtkGlobeClippingRange::Install(scene.Renderer);
+  return pass;
+}
+/// Wrong-surface pixels of an object in front of or behind terrain (see CountWrongSurface).
+struct SurfaceCount
+{
+  int Checked = 0;  // object pixels off its silhouette and clear of a terrain crossing
+  int Wrong = 0;    // where the drawn surface (object or not) is not the exact nearest one
+  int Hidden = 0;   // checked pixels where terrain is nearer than the object
+  int Grazing = 0;  // left out: the ray passes the terrain within the margin before the object
+};
+
+/**
+ * For every pixel whose exact ray (double) meets an object (`hit`: eye distance or -1) and
+ * whose 3x3 neighbours do too: is terrain nearer along the ray (the composed data marched in
+ * steps of `relativeStep` of the distance, at least `minimumStep`), judged against
+ * `margin(s)`, what the PGM mesh may deviate at distance s? A ray that passes within the
+ * margin is left out (too close to call); otherwise the drawn colour (`isObject`) must agree.
+ */
+inline SurfaceCount CountWrongSurface(Scene& scene,
+  const std::function<double(const double*, const double*)>& hit,
+  const std::function<bool(const unsigned char*)>& isObject,
+  const std::function<double(double)>& margin, double minimumStep, double relativeStep)
+{
+  SurfaceCount count;
+  const int* size = scene.Window->GetSize();
+  const double* eye = scene.Renderer->GetActiveCamera()->GetPosition();
+  const std::vector<vtkGlobeLayer*> layers = HeightLayers(scene.Mapper);
+  vtkNew<vtkUnsignedCharArray> rgb;
+  scene.Window->GetPixelData(0, 0, size[0] - 1, size[1] - 1, 0, rgb);
+  std::vector<double> distance(static_cast<size_t>(size[0]) * size[1], -1.0);
+  for (int y = 0; y < size[1]; ++y)
+  {
+    for (int x = 0; x < size[0]; ++x)
+    {
+      double ray[3];
+      PixelRay(scene.Renderer, x + 0.5, y + 0.5, ray);
+      distance[static_cast<size_t>(y) * size[0] + x] = hit(eye, ray);
+    }
+  }
+  for (int y = 1; y + 1 < size[1]; ++y)
+  {
+    for (int x = 1; x + 1 < size[0]; ++x)
+    {
+      const size_t at = static_cast<size_t>(y) * size[0] + x;
+      const double t = distance[at];
+      bool inside = t > 0;
+      for (int j = -1; j <= 1 && inside; ++j)
+      {
+        for (int i = -1; i <= 1 && inside; ++i)
+        {
+          inside = distance[at + j * size[0] + i] > 0;
+        }
+      }
+      if (!inside)
+      {
+        continue;
+      }
+      double ray[3];
+      PixelRay(scene.Renderer, x + 0.5, y + 0.5, ray);
+      double lowest = 1e300;
+      for (double s = minimumStep;; s = std::min(t, s + std::max(minimumStep, relativeStep * s)))
+      {
+        lowest = std::min(lowest, RayHeightOverTerrain(scene.Body, layers, eye, ray, s) / margin(s));
+        if (s >= t || lowest < -1.0)
+        {
+          break;
+        }
+      }
+      if (std::abs(lowest) < 1.0)
+      {
+        ++count.Grazing;
+        continue;
+      }
+      const bool objectInFront = lowest > 0;
+      const bool objectDrawn = isObject(rgb->GetPointer(3 * static_cast<vtkIdType>(at)));
+      ++count.Checked;
+      count.Hidden += objectInFront ? 0 : 1;
+      count.Wrong += objectInFront != objectDrawn ? 1 : 0;
+      if (objectInFront != objectDrawn && std::getenv("VTKGLOBE_TEST_VERBOSE"))
+      {
+        std::printf("    wrong: pixel (%d, %d) at %.0f m, clearance/margin %.2f\n", x, y, t, lowest);
+      }
+    }
+  }
+  return count;
+}
+
+/// A flat-coloured actor (ambient only) for a source.
+inline vtkSmartPointer<vtkActor> FlatActor(vtkPolyDataAlgorithm* source, double r, double g, double b)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(source->GetOutputPort());
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(r, g, b);
+  actor->GetProperty()->SetAmbient(1.0);
+  actor->GetProperty()->SetDiffuse(0.0);
+  actor->GetProperty()->SetSpecular(0.0);
+  return actor;
+}
+
+/// Points the camera from a world position along a direction, with an up vector.
+inline void LookAlong(vtkRenderer* renderer, const double eye[3], const double direction[3],
+  const double up[3], double viewAngle)
+{
+  vtkCamera* c = renderer->GetActiveCamera();
+  c->SetPosition(eye);
+  c->SetFocalPoint(eye[0] + direction[0], eye[1] + direction[1], eye[2] + direction[2]);
+  c->SetViewUp(up);
+  c->SetViewAngle(viewAngle);
+  c->OrthogonalizeViewUp();
 }
 } // namespace vtkGlobeTest
 

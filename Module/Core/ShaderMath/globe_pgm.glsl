@@ -99,7 +99,13 @@ float globe_pgmGridPoint(vec3 ray, vec3 nadir, vec3 anyPerpendicular, float d, f
       vec3 sS = s;
       globe_sphereHit(cos(omegaS), sin(omegaS), d, rS, aS, nadir, k, tS, sS);
       s = globe_normalize(mix(s, sS, f));
-      p = s * rP + nadir * d;
+      // The primary-sphere point in direction s, relative to the eye, in the E1 form
+      // (a + r (1 - cos g)) nadir + r sin g k: s * rP + nadir * d would subtract two numbers
+      // of about 1 and leave float noise of 1 ulp of the radius (0.4 m on the Earth) in every
+      // vertex past the blend start. cos g is taken from sin g so the point stays on the sphere.
+      float sinG = clamp(dot(s, k), 0.0f, 1.0f);
+      float cosG = sqrt(max(1.0f - sinG * sinG, 0.0f));
+      p = nadir * (aP + rP * sinG * sinG / (1.0f + cosG)) + k * (rP * sinG);
     }
   }
   return 1.0f;
