@@ -59,7 +59,9 @@ with_display() {
   if [ -n "${DISPLAY:-}" ] && xdpyinfo >/dev/null 2>&1; then
     "$@"
   else
-    xvfb-run -a -s "-screen 0 1280x1024x24" "$@"
+    # -noreset: Xvfb resets when its last client leaves, and a test that closes one window
+    # and opens the next could reach it mid-reset ("bad X server connection").
+    xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" "$@"
   fi
 }
 

@@ -140,7 +140,7 @@ def require_display():
     """VTK on Debian renders through X even offscreen: without a display it would abort."""
     if not os.environ.get("DISPLAY"):
         sys.exit("error: no X display (DISPLAY is not set). Run under Xvfb, e.g.\n"
-                 "  xvfb-run -a -s '-screen 0 1280x1024x24' /usr/bin/python3 " + " ".join(sys.argv)
+                 "  xvfb-run -a -s '-screen 0 1280x1024x24 -noreset' /usr/bin/python3 " + " ".join(sys.argv)
                  + "\nor: bash Utilities/globe.sh python " + " ".join(sys.argv))
 
 
