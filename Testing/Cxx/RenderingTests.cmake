@@ -7,6 +7,7 @@ set(globe_rendering_tests
   TestGlobeEverestHorizon.cxx
   TestGlobeFarAway.cxx
   TestGlobeGridPass.cxx
+  TestGlobeInsets.cxx
   TestGlobeLookingAway.cxx
   TestGlobeMapProjectionGPU.cxx
   TestGlobeMoon.cxx
@@ -48,6 +49,13 @@ vtk_module_autoinit(TARGETS GlobeRenderingCxxTests
 set(_globe_baselines "${PROJECT_SOURCE_DIR}/Testing/Baseline")
 set(_globe_temporary "${CMAKE_BINARY_DIR}/Testing/Temporary")
 file(MAKE_DIRECTORY "${_globe_temporary}")
+# The insets once more, feathered, against their own baseline.
+add_test(NAME "Rendering.TestGlobeInsetsFeathered"
+  COMMAND GlobeRenderingCxxTests TestGlobeInsets -feather
+    -D "${VTKGLOBE_DATA_DIR}"
+    -T "${_globe_temporary}"
+    -V "${_globe_baselines}/TestGlobeInsetsFeathered.png")
+set_tests_properties("Rendering.TestGlobeInsetsFeathered" PROPERTIES TIMEOUT 600)
 target_compile_definitions(GlobeRenderingCxxTests PRIVATE
   "VTKGLOBE_TEMP_DIR=\"${_globe_temporary}\"")
 foreach (test_file IN LISTS globe_rendering_tests)
