@@ -13,10 +13,14 @@
 //     test): nearest-filtered checkerboards in equirectangular, polar stereographic and UTM,
 //     each texel a different colour; every pixel shows the texel the exact projection (CPU,
 //     GeographicLib) puts there, except within a margin of texel edges.
+//  D. Kooima's projection-quality weight: an equirectangular and a polar stereographic layer
+//     averaged by their weights give the exact mixture at 30, 60 and 85 degrees north (weights
+//     0.931, 2/3 and 0 for equirectangular; 1 for the conformal polar projection).
 #include "vtkGlobeRenderingTestHelpers.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkGlobeCompositePass.h"
 #include "vtkGlobeLayerSet.h"
 #include "vtkGlobeRasterReader.h"
 #include "vtkImageData.h"
@@ -403,6 +407,60 @@ void PartSynthetic()
     "projection's", checked, perLayer[0], perLayer[1], perLayer[2], wrong);
   Expect(perLayer[0] > 2000 && perLayer[1] > 2000 && perLayer[2] > 2000 && wrong == 0, what);
 }
+void PartQualityWeight()
+{
+  std::printf("D. Kooima's projection-quality weight (two layers averaged, lighting off):\n");
+  vtkGlobeTest::Scene scene;
+  scene.Mapper->LightingOff();
+  auto equirect = vtkSmartPointer<vtkGlobeLayer>::New();
+  std::vector<unsigned char> red;
+  for (int i = 0; i < 36 * 18; ++i)
+  {
+    red.insert(red.end(), { 255, 0, 0 });
+  }
+  equirect->SetColorData(36, 18, 3, red.data(), -180, 180, -90, 90);
+  auto polar = ProjectedImage(3413, 8, 8, -4.0e6, 4.0e6, 1.0e6,
+    [](int, int) { return std::array<unsigned char, 3>{ 0, 0, 255 }; });
+  for (vtkGlobeLayer* l : { equirect.Get(), polar.Get() })
+  {
+    l->SetBlendModeToAverage();
+    l->ProjectionQualityWeightOn();
+    l->SetFeatherWidth(0.0);
+    scene.Mapper->AddLayer(l);
+  }
+  // A global 2:1 equirectangular raster has texel aspect k = 1 / cos(lat): weight
+  // 1 - ln(1/cos lat) / ln 8 (exactly 2/3 at 60 N, 0 above ~82.8 N); polar stereographic is
+  // conformal (k = 1, weight 1). The average is (w_e red + w_p blue) / (w_e + w_p).
+  for (double lat : { 30.0, 60.0, 85.0 })
+  {
+    const double we = std::max(0.0, 1.0 - std::log(1.0 / std::cos(lat * vtkMath::Pi() / 180.0)) / std::log(8.0));
+    // Outside the polar raster (30 N) only the equirectangular weight counts, and the average
+    // replaces the base colour by min(sum of weights, 1).
+    const double wp = lat > 50.0 ? 1.0 : 0.0, sum = we + wp;
+    const double average[3] = { we / sum, 0.0, wp / sum };
+    const double* base = scene.Mapper->GetCompositePass()->GetBaseColor();
+    double expected[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      expected[k] = base[k] + (average[k] - base[k]) * std::min(sum, 1.0);
+    }
+    const double camera[3] = { -45.0, lat - 0.5, 50000.0 }, target[3] = { -45.0, lat, 0.0 };
+    scene.Look(camera, target, 10.0, 1000.0, 1.0e6);
+    scene.Render();
+    const int* size = scene.Window->GetSize();
+    unsigned char* pixel = scene.Window->GetPixelData(size[0] / 2, size[1] / 2, size[0] / 2, size[1] / 2, 0);
+    double worst = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      worst = std::max(worst, std::abs(pixel[k] / 255.0 - expected[k]));
+    }
+    char what[200];
+    std::snprintf(what, sizeof(what), "at %2.0f N: (%.3f %.3f %.3f), expected (%.3f %.3f %.3f)", lat,
+      pixel[0] / 255.0, pixel[1] / 255.0, pixel[2] / 255.0, expected[0], expected[1], expected[2]);
+    delete[] pixel;
+    Expect(worst < 0.01, what);
+  }
+}
 } // namespace
 
 int TestGlobeProjectedLayers(int argc, char* argv[])
@@ -411,6 +469,7 @@ int TestGlobeProjectedLayers(int argc, char* argv[])
   bool image = true;
   PartPolarCap(argc, argv, image);
   PartSynthetic();
+  PartQualityWeight();
   std::printf("%s\n", ok ? "numeric checks passed" : "numeric checks FAILED");
   return ok && image ? 0 : 1;
 }
