@@ -1097,8 +1097,8 @@ void vtkGlobeLayer::SetMemoryImage(int role, int width, int height, int componen
   this->Update();
 }
 
-void vtkGlobeLayer::SetHeightData(
-  int width, int height, const float* values, double west, double east, double south, double north)
+bool vtkGlobeLayer::StartMemoryData(const char* method, const char* what, int width, int height,
+  const void* values, const double extent[4])
 {
   vtkInternals& in = *this->Internals;
   // In-memory data replaces the file and any input.
@@ -1108,28 +1108,31 @@ void vtkGlobeLayer::SetHeightData(
   this->Invalidate();
   this->Modified();
   std::string why;
-  if (!CheckMemoryInput(width, height, values, why) || !CheckExtent(west, east, south, north, why))
+  if (!CheckMemoryInput(width, height, values, why) ||
+    !CheckExtent(extent[0], extent[1], extent[2], extent[3], why))
   {
-    vtkErrorMacro(<< "SetHeightData: rejected in-memory height data: " << why);
-    return;
+    vtkErrorMacro(<< method << ": rejected in-memory " << what << ": " << why);
+    return false;
   }
+  return true;
+}
+
+void vtkGlobeLayer::SetHeightData(
+  int width, int height, const float* values, double west, double east, double south, double north)
+{
   const double extent[4] = { west, east, south, north };
-  this->SetMemoryImage(Height, width, height, 1, VTK_FLOAT, values, extent);
+  if (this->StartMemoryData("SetHeightData", "height data", width, height, values, extent))
+  {
+    this->SetMemoryImage(Height, width, height, 1, VTK_FLOAT, values, extent);
+  }
 }
 
 void vtkGlobeLayer::SetColorData(int width, int height, int components, const unsigned char* values,
   double west, double east, double south, double north)
 {
-  vtkInternals& in = *this->Internals;
-  this->SetFileName(nullptr);
-  in.Sink->SetInputConnection(nullptr);
-  in.SetSource(vtkInternals::None);
-  this->Invalidate();
-  this->Modified();
-  std::string why;
-  if (!CheckMemoryInput(width, height, values, why) || !CheckExtent(west, east, south, north, why))
+  const double extent[4] = { west, east, south, north };
+  if (!this->StartMemoryData("SetColorData", "color data", width, height, values, extent))
   {
-    vtkErrorMacro(<< "SetColorData: rejected in-memory color data: " << why);
     return;
   }
   if (components != 3 && components != 4)
@@ -1138,7 +1141,6 @@ void vtkGlobeLayer::SetColorData(int width, int height, int components, const un
                   << " components per pixel; 3 (RGB) or 4 (RGBA) are needed");
     return;
   }
-  const double extent[4] = { west, east, south, north };
   this->SetMemoryImage(Color, width, height, components, VTK_UNSIGNED_CHAR, values, extent);
 }
 

@@ -381,6 +381,8 @@ private:
   void operator=(const vtkGlobeLayer&) = delete;
 
   bool Load(vtkImageData* image);
+  bool StartMemoryData(const char* method, const char* what, int width, int height,
+    const void* values, const double extent[4]);
   void SetMemoryImage(int role, int width, int height, int components, int scalarType,
     const void* values, const double extent[4]);
   std::string DescribeSource();

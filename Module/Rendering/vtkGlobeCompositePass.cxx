@@ -316,32 +316,22 @@ std::string vtkGlobeCompositePass::BuildFragmentShader()
     functions += vtkGlobeAtmosphere;
     functions += "\nuniform float globeAtmosphereIntensity;\n";
     // Sky: where the ray crosses the shell and no terrain is drawn; added to the background.
-    sky += "  float t0, t1, g0, g1;\n"
-           "  if (globe_atmSphere(globeEye, ray, globe_atmOuter, t0, t1))\n"
+    sky += "  vec3 sky, skyTransmittance;\n"
+           "  if (globe_atmosphereAlong(globeEye, ray, -1.0, globeLightDirection,\n"
+           "        globeAtmosphereIntensity, sky, skyTransmittance))\n"
            "  {\n"
-           "    if (globe_atmSphere(globeEye, ray, globe_atmInner, g0, g1) && g0 > 0.0) t1 = g0;\n"
-           "    vec3 rayleigh, mie, transmittance;\n"
-           "    globe_atmosphere(globeEye, ray, max(t0, 0.0), t1, globeLightDirection, rayleigh,\n"
-           "      mie, transmittance);\n"
-           "    vec3 sky = globe_atmPhased(rayleigh, mie, ray, globeLightDirection,\n"
-           "      globeAtmosphereIntensity);\n"
-           "    gl_FragData[0] = vec4(1.0 - exp(-sky), 0.0);\n"
+           "    gl_FragData[0] = vec4(sky, 0.0);\n"
            "    gl_FragDepth = 1.0;\n"
            "    return;\n"
            "  }\n";
     // Ground: haze in front of the terrain, seen from space or from inside the shell.
     shade += "  {\n"
              "    vec3 ground = s * globeRadiiScaled + (g.w / globeMaximumRadius) * n;\n"
-             "    float tGround = length(ground - globeEye);\n"
-             "    float t0, t1;\n"
-             "    if (globe_atmSphere(globeEye, ray, globe_atmOuter, t0, t1) && tGround > max(t0, 0.0))\n"
+             "    vec3 haze, transmittance;\n"
+             "    if (globe_atmosphereAlong(globeEye, ray, length(ground - globeEye),\n"
+             "          globeLightDirection, globeAtmosphereIntensity, haze, transmittance))\n"
              "    {\n"
-             "      vec3 rayleigh, mie, transmittance;\n"
-             "      globe_atmosphere(globeEye, ray, max(t0, 0.0), tGround, globeLightDirection,\n"
-             "        rayleigh, mie, transmittance);\n"
-             "      vec3 haze = globe_atmPhased(rayleigh, mie, ray, globeLightDirection,\n"
-             "        globeAtmosphereIntensity);\n"
-             "      color = color * transmittance + (1.0 - exp(-haze));\n"
+             "      color = color * transmittance + haze;\n"
              "    }\n"
              "  }\n";
   }

@@ -41,6 +41,10 @@ struct Entry
   vtkSmartPointer<vtkGlobeMapProjection> Projection;
   std::string Function;
   float Parameters[vtkGlobeMapProjection::NumberOfShaderParameters] = {};
+  // The loaded data the projection was prepared for: georeferencing changes only with a load.
+  vtkDataArray* PreparedData = nullptr;
+  vtkMTimeType PreparedTime = 0;
+  bool Prepared = false;
   double Border[4] = { 0, 0, 0, 0 }; // feather u, v (texture coordinates); 1/log(n); unused
 };
 
@@ -165,10 +169,18 @@ int vtkGlobeLayerSet::Update()
       }
       continue;
     }
-    e.Function.clear();
-    if (layer->GetModelType() == vtkGlobeLayer::Projected)
+    const bool projected = layer->GetModelType() == vtkGlobeLayer::Projected;
+    vtkDataArray* data = layer->GetData();
+    if (data != e.PreparedData || data->GetMTime() != e.PreparedTime)
     {
-      if (!this->PrepareProjection(&e))
+      e.Function.clear();
+      e.Prepared = !projected || this->PrepareProjection(&e);
+      e.PreparedData = data;
+      e.PreparedTime = data->GetMTime();
+    }
+    if (projected)
+    {
+      if (!e.Prepared)
       {
         continue;
       }

@@ -5,6 +5,7 @@
 // Covers replace, add, weighted average, opacity, gamma, valid range, NaN voids, draw order,
 // disabled layers, hard and feathered borders, and the base that shows where all weights are 0.
 #include "vtkGlobeRenderingTestHelpers.h"
+#include "vtkGlobeTestHelpers.h"
 
 #include "vtkGlobeCompositePass.h"
 #include "vtkGlobeGridPass.h"
@@ -67,11 +68,7 @@ double CentreHeight(vtkGlobeTest::Scene& scene, double lon, double lat, double a
 
 int TestGlobeComposition(int, char*[])
 {
-  bool ok = true;
-  auto expect = [&ok](bool condition, const std::string& what) {
-    std::printf("  %-62s %s\n", what.c_str(), condition ? "ok" : "FAILED");
-    ok &= condition;
-  };
+  vtkGlobeTest::Checklist check;
 
   // ---- Heights (grid pass) -------------------------------------------------------------
   {
@@ -143,7 +140,7 @@ int TestGlobeComposition(int, char*[])
       char what[160];
       std::snprintf(what, sizeof(what), "height %s: %.3f m (expect %.0f, mirror %.3f)", c.What, h,
         c.Expected, mirror);
-      expect(std::abs(h - c.Expected) < 0.5 && std::abs(mirror - c.Expected) < 1e-3, what);
+      check.Expect(std::abs(h - c.Expected) < 0.5 && std::abs(mirror - c.Expected) < 1e-3, what);
     }
     std::printf("  grid-pass height programs built: %d\n",
       scene.Mapper->GetGridPass()->GetNumberOfShaderBuilds());
@@ -195,7 +192,7 @@ int TestGlobeComposition(int, char*[])
       char what[160];
       std::snprintf(what, sizeof(what), "colour %s: (%.3f %.3f %.3f), worst %.4f", c.What, rgb[0],
         rgb[1], rgb[2], worst);
-      expect(worst <= 2.5 / 255.0, what);
+      check.Expect(worst <= 2.5 / 255.0, what);
     }
 
     // Feathered border: across the west edge of an 8 x 8 texel inset (0.25 deg/texel) the
@@ -211,8 +208,8 @@ int TestGlobeComposition(int, char*[])
       char what[160];
       std::snprintf(what, sizeof(what), "feather %.0f texels: red %.3f half a texel in (expect %.3f)",
         feather, rgb[0], expected);
-      expect(std::abs(rgb[0] - expected) < 0.02, what);
+      check.Expect(std::abs(rgb[0] - expected) < 0.02, what);
     }
   }
-  return ok ? 0 : 1;
+  return check.Result();
 }

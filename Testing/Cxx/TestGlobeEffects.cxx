@@ -10,6 +10,7 @@
 // where the layer is bright; specular water brightens only masked (ocean) pixels. The final
 // image (every effect on) is a regression baseline.
 #include "vtkGlobeRenderingTestHelpers.h"
+#include "vtkGlobeTestHelpers.h"
 
 #include "vtkGlobeCompositePass.h"
 #include "vtkGlobeGridPass.h"
@@ -22,37 +23,6 @@
 
 namespace
 {
-std::vector<unsigned char> Pixels(vtkRenderWindow* window)
-{
-  const int* size = window->GetSize();
-  unsigned char* data = window->GetPixelData(0, 0, size[0] - 1, size[1] - 1, 0);
-  std::vector<unsigned char> rgb(data, data + 3 * size[0] * size[1]);
-  delete[] data;
-  return rgb;
-}
-
-// Geodetic position (deg, deg, m) of every covered pixel; NaN where nothing is drawn.
-std::vector<std::array<double, 3>> Geodetic(vtkGlobeTest::Scene& scene)
-{
-  const int* size = scene.Window->GetSize();
-  const std::vector<float> depth = vtkGlobeTest::ReadDepth(scene.Window);
-  std::vector<std::array<double, 3>> llh(depth.size(), { NAN, NAN, NAN });
-  for (int y = 0; y < size[1]; ++y)
-  {
-    for (int x = 0; x < size[0]; ++x)
-    {
-      const size_t i = static_cast<size_t>(y) * size[0] + x;
-      if (depth[i] < 1.0f)
-      {
-        double p[3];
-        vtkGlobeTest::UnprojectPixel(scene.Renderer, x + 0.5, y + 0.5, depth[i], p);
-        scene.Body->CartesianToGeodetic(p, llh[i].data());
-      }
-    }
-  }
-  return llh;
-}
-
 // The GPU's fwidth of a per-pixel quantity, as a 2x2-quad rasterizer computes it: the largest
 // difference across the pixel's quad along x plus along y. `value` gives NaN off the globe;
 // `difference` maps a difference (e.g. wraps longitude).
@@ -73,11 +43,7 @@ double QuadWidth(int x, int y, const std::function<double(int, int)>& value,
 
 int TestGlobeEffects(int argc, char* argv[])
 {
-  bool ok = true;
-  auto expect = [&ok](bool condition, const std::string& what) {
-    std::printf("  %-70s %s\n", what.c_str(), condition ? "ok" : "FAILED");
-    ok &= condition;
-  };
+  vtkGlobeTest::Checklist check;
   char what[200];
 
   vtkGlobeTest::Scene scene(300, 225, 256);
@@ -103,11 +69,11 @@ int TestGlobeEffects(int argc, char* argv[])
   auto lacks = [&](const char* code) {
     return composite->GetFragmentShaderSource().find(code) == std::string::npos;
   };
-  expect(lacks("globe_atm") && lacks("globe_lineCoverage") && lacks("globe_composeNightLights") &&
+  check.Expect(lacks("globe_atm") && lacks("globe_lineCoverage") && lacks("globe_composeNightLights") &&
       lacks("globe_composeMask") && lacks("globeSpecular.x"),
     "no atmosphere, line, night-light or water code without those effects");
-  const std::vector<unsigned char> plain = Pixels(scene.Window);
-  const auto llh = Geodetic(scene);
+  const std::vector<unsigned char> plain = vtkGlobeTest::ReadPixels(scene.Window);
+  const auto llh = vtkGlobeTest::GeodeticPixels(scene);
 
   // Uniform-only changes: nothing rebuilt, nothing re-uploaded.
   const int compositeBuilds = composite->GetNumberOfShaderBuilds();
@@ -127,7 +93,7 @@ int TestGlobeEffects(int argc, char* argv[])
     "uniform-only changes: programs built %d -> %d (grid %d -> %d), uploads %d -> %d",
     compositeBuilds, composite->GetNumberOfShaderBuilds(), gridBuilds,
     grid->GetNumberOfShaderBuilds(), uploads, layers->GetNumberOfUploads());
-  expect(composite->GetNumberOfShaderBuilds() == compositeBuilds &&
+  check.Expect(composite->GetNumberOfShaderBuilds() == compositeBuilds &&
       grid->GetNumberOfShaderBuilds() == gridBuilds && layers->GetNumberOfUploads() == uploads,
     what);
   scene.Mapper->SetAmbient(0.15);
@@ -145,10 +111,10 @@ int TestGlobeEffects(int argc, char* argv[])
   // Atmosphere: one rebuild; sky pixels only inside the shell's silhouette.
   scene.Mapper->AtmosphereOn();
   scene.Render();
-  expect(composite->GetNumberOfShaderBuilds() == compositeBuilds + 1 && !lacks("globe_atmosphere"),
+  check.Expect(composite->GetNumberOfShaderBuilds() == compositeBuilds + 1 && !lacks("globe_atmosphere"),
     "atmosphere on: one rebuild, its code present");
   {
-    const std::vector<unsigned char> sky = Pixels(scene.Window);
+    const std::vector<unsigned char> sky = vtkGlobeTest::ReadPixels(scene.Window);
     int skyPixels = 0, outside = 0, hazed = 0;
     double eye[3];
     scene.Renderer->GetActiveCamera()->GetPosition(eye);
@@ -180,7 +146,7 @@ int TestGlobeEffects(int argc, char* argv[])
     std::snprintf(what, sizeof(what),
       "atmosphere: %d sky pixels, %d beyond the 1.025 R shell; %d terrain pixels hazed", skyPixels,
       outside, hazed);
-    expect(skyPixels > 300 && outside == 0 && hazed > 1000, what);
+    check.Expect(skyPixels > 300 && outside == 0 && hazed > 1000, what);
   }
   scene.Mapper->AtmosphereOff();
 
@@ -188,7 +154,7 @@ int TestGlobeEffects(int argc, char* argv[])
   // antialiasing pixel (1.25 px), in units of the pixel's own change of longitude/latitude.
   scene.Mapper->GraticuleOn();
   scene.Render();
-  expect(!lacks("globe_lineCoverage"), "graticule on: its code present");
+  check.Expect(!lacks("globe_lineCoverage"), "graticule on: its code present");
   auto at = [&](int x, int y, int c) {
     if (x < 0 || y < 0 || x >= size[0] || y >= size[1])
     {
@@ -212,7 +178,7 @@ int TestGlobeEffects(int argc, char* argv[])
     return true;
   };
   {
-    const std::vector<unsigned char> lines = Pixels(scene.Window);
+    const std::vector<unsigned char> lines = vtkGlobeTest::ReadPixels(scene.Window);
     int changed = 0, off = 0;
     for (int y = 0; y < size[1]; ++y)
     {
@@ -235,7 +201,7 @@ int TestGlobeEffects(int argc, char* argv[])
       }
     }
     std::snprintf(what, sizeof(what), "graticule: %d pixels drawn, %d of them off the lines", changed, off);
-    expect(changed > 500 && off == 0, what);
+    check.Expect(changed > 500 && off == 0, what);
   }
   scene.Mapper->GraticuleOff();
 
@@ -244,7 +210,7 @@ int TestGlobeEffects(int argc, char* argv[])
   scene.Mapper->ContoursOn();
   scene.Render();
   {
-    const std::vector<unsigned char> lines = Pixels(scene.Window);
+    const std::vector<unsigned char> lines = vtkGlobeTest::ReadPixels(scene.Window);
     const std::vector<vtkGlobeLayer*> all = vtkGlobeTest::HeightLayers(scene.Mapper);
     std::vector<double> heights(llh.size(), NAN);
     for (size_t i = 0; i < llh.size(); ++i)
@@ -279,7 +245,7 @@ int TestGlobeEffects(int argc, char* argv[])
       }
     }
     std::snprintf(what, sizeof(what), "contours: %d pixels drawn, %d of them off the 1 km contours", changed, off);
-    expect(changed > 300 && off == 0, what);
+    check.Expect(changed > 300 && off == 0, what);
   }
   scene.Mapper->ContoursOff();
 
@@ -288,13 +254,13 @@ int TestGlobeEffects(int argc, char* argv[])
   scene.Mapper->NightLightsOff();
   scene.Mapper->SpecularWaterOff();
   scene.Render();
-  expect(lacks("globe_composeNightLights") && lacks("globeSpecular.x"),
+  check.Expect(lacks("globe_composeNightLights") && lacks("globeSpecular.x"),
     "layers present, effects off: no night-light or water code");
-  const std::vector<unsigned char> dark = Pixels(scene.Window);
+  const std::vector<unsigned char> dark = vtkGlobeTest::ReadPixels(scene.Window);
   scene.Mapper->NightLightsOn();
   scene.Render();
   {
-    const std::vector<unsigned char> lit = Pixels(scene.Window);
+    const std::vector<unsigned char> lit = vtkGlobeTest::ReadPixels(scene.Window);
     int brighter = 0, wrong = 0;
     vtkMath::Normalize(sunPosition);
     for (int i = 0; i < n; ++i)
@@ -309,13 +275,13 @@ int TestGlobeEffects(int argc, char* argv[])
       wrong += vtkMath::Dot(up, sunPosition) > 0.11 || lit[3 * i] < dark[3 * i];
     }
     std::snprintf(what, sizeof(what), "night lights: %d pixels brighter, %d of them in daylight", brighter, wrong);
-    expect(!lacks("globe_composeNightLights") && brighter > 50 && wrong == 0, what);
+    check.Expect(!lacks("globe_composeNightLights") && brighter > 50 && wrong == 0, what);
   }
-  const std::vector<unsigned char> night = Pixels(scene.Window);
+  const std::vector<unsigned char> night = vtkGlobeTest::ReadPixels(scene.Window);
   scene.Mapper->SpecularWaterOn();
   scene.Render();
   {
-    const std::vector<unsigned char> shiny = Pixels(scene.Window);
+    const std::vector<unsigned char> shiny = vtkGlobeTest::ReadPixels(scene.Window);
     vtkGlobeLayer* relief = scene.Mapper->GetLayer(0);
     int brighter = 0, land = 0;
     for (int i = 0; i < n; ++i)
@@ -338,7 +304,7 @@ int TestGlobeEffects(int argc, char* argv[])
       land += dry;
     }
     std::snprintf(what, sizeof(what), "specular water: %d pixels brighter, %d of them on dry land", brighter, land);
-    expect(!lacks("globeSpecular.x") && brighter > 100 && land == 0, what);
+    check.Expect(!lacks("globeSpecular.x") && brighter > 100 && land == 0, what);
   }
 
   // Everything on: the baseline.
@@ -347,6 +313,5 @@ int TestGlobeEffects(int argc, char* argv[])
   composite->SetGraticuleSpacing(30.0);
   scene.Render();
   const int image = vtkRegressionTestImageThreshold(scene.Window, 0.05);
-  std::printf("%s\n", ok ? "numeric checks passed" : "numeric checks FAILED");
-  return (ok && image == vtkTesting::PASSED) ? 0 : 1;
+  return (check.Result() == 0 && image == vtkTesting::PASSED) ? 0 : 1;
 }

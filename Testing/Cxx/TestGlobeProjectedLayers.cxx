@@ -7,7 +7,7 @@
 //  B. The global imagery (equirectangular) and the north polar cap (EPSG:3413 polar
 //     stereographic): the two register to a fraction of a pixel (best shift of the cap's image
 //     against the base's in the ring both cover), and their composition has no seam (every
-//     pixel lies between the two layers' colours) and no polar pinch (near the pole it is the
+//     pixel lies between the two layers' colours around it) and no polar pinch (near the pole it is the
 //     cap). Regression baseline: the composition.
 //  C. A synthetic planet seen through three projections at different resolutions (Kooima's
 //     test): nearest-filtered checkerboards in equirectangular, polar stereographic and UTM,
@@ -17,6 +17,7 @@
 //     averaged by their weights give the exact mixture at 30, 60 and 85 degrees north (weights
 //     0.931, 2/3 and 0 for equirectangular; 1 for the conformal polar projection).
 #include "vtkGlobeRenderingTestHelpers.h"
+#include "vtkGlobeTestHelpers.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -33,43 +34,7 @@
 
 namespace
 {
-bool ok = true;
-void Expect(bool condition, const std::string& what)
-{
-  std::printf("  %-4s %s\n", condition ? "ok" : "FAIL", what.c_str());
-  ok &= condition;
-}
-
-std::vector<unsigned char> Pixels(vtkRenderWindow* window)
-{
-  const int* size = window->GetSize();
-  unsigned char* data = window->GetPixelData(0, 0, size[0] - 1, size[1] - 1, 0);
-  std::vector<unsigned char> rgb(data, data + 3 * size[0] * size[1]);
-  delete[] data;
-  return rgb;
-}
-
-// Depth-reconstructed geodetic position of every pixel (NaN where nothing is drawn).
-std::vector<std::array<double, 3>> Geodetic(vtkGlobeTest::Scene& scene)
-{
-  const int* size = scene.Window->GetSize();
-  const std::vector<float> depth = vtkGlobeTest::ReadDepth(scene.Window);
-  std::vector<std::array<double, 3>> llh(depth.size(), { NAN, NAN, NAN });
-  for (int y = 0; y < size[1]; ++y)
-  {
-    for (int x = 0; x < size[0]; ++x)
-    {
-      const size_t i = static_cast<size_t>(y) * size[0] + x;
-      if (depth[i] < 1.0f)
-      {
-        double p[3];
-        vtkGlobeTest::UnprojectPixel(scene.Renderer, x + 0.5, y + 0.5, depth[i], p);
-        scene.Body->CartesianToGeodetic(p, llh[i].data());
-      }
-    }
-  }
-  return llh;
-}
+vtkGlobeTest::Checklist Check;
 
 // An in-memory projected RGB raster: colour(i, j) for column i (east) and row j (north
 // first), its north-west outer corner and pixel size in metres, as a reader would give it.
@@ -155,9 +120,9 @@ void PartRainier()
       "%s: %d pixels, median |dh| %.2f m, worst/bound %.2f, %d beyond, %d NaN",
       s == &geo ? "geographic alone" : (s == &utm ? "UTM alone" : "both composed"), check.Pixels,
       check.MedianError, check.WorstRatio, check.Failures, check.NaNs);
-    Expect(check.Pixels > 10000 && check.Failures == 0 && check.NaNs == 0, what);
+    Check.Expect(check.Pixels > 10000 && check.Failures == 0 && check.NaNs == 0, what);
   }
-  Expect(utm.Mapper->GetLayerSet()->GetNumberOfActiveHeightLayers() == 2,
+  Check.Expect(utm.Mapper->GetLayerSet()->GetNumberOfActiveHeightLayers() == 2,
     "the UTM layer is active (composed, not refused)");
 
   // Registration, seen almost straight down with a narrow view (so a height difference barely
@@ -169,7 +134,7 @@ void PartRainier()
     s->Look(above, summit, 15.0, 1000.0, 1.0e5);
     s->Render();
   }
-  const auto a = Geodetic(geo), b = Geodetic(utm);
+  const auto a = vtkGlobeTest::GeodeticPixels(geo), b = vtkGlobeTest::GeodeticPixels(utm);
   vtkGlobeLayer* geoLayer = geo.Mapper->GetLayer(1);
   vtkGlobeLayer* utmLayer = utm.Mapper->GetLayer(1);
   double rendered = 0.0, data = 0.0, halfPost = 0.0;
@@ -200,7 +165,7 @@ void PartRainier()
     "%d pixels: RMS height difference of the renders %.2f m; of the two data sets at the same "
     "points %.2f m (the data shifted by one 90 m post: %.2f m)",
     n, rendered, data, halfPost);
-  Expect(n > 5000 && rendered <= 1.25 * data + 1.0 && data < halfPost, what);
+  Check.Expect(n > 5000 && rendered <= 1.25 * data + 1.0 && data < halfPost, what);
 }
 
 void PartPolarCap(int argc, char* argv[], bool& imageOk)
@@ -217,16 +182,16 @@ void PartPolarCap(int argc, char* argv[], bool& imageOk)
   const int uploads0 = scene.Mapper->GetLayerSet()->GetNumberOfUploads();
   cap->EnabledOff();
   scene.Render();
-  const auto imageBase = Pixels(scene.Window);
+  const auto imageBase = vtkGlobeTest::ReadPixels(scene.Window);
   cap->EnabledOn();
   base->EnabledOff();
   scene.Render();
-  const auto imageCap = Pixels(scene.Window);
+  const auto imageCap = vtkGlobeTest::ReadPixels(scene.Window);
   base->EnabledOn();
   scene.Render();
-  const auto imageBoth = Pixels(scene.Window);
-  const auto llh = Geodetic(scene);
-  Expect(scene.Mapper->GetLayerSet()->GetNumberOfUploads() - uploads0 == 2,
+  const auto imageBoth = vtkGlobeTest::ReadPixels(scene.Window);
+  const auto llh = vtkGlobeTest::GeodeticPixels(scene);
+  Check.Expect(scene.Mapper->GetLayerSet()->GetNumberOfUploads() - uploads0 == 2,
     "enabling and disabling layers re-uploads nothing (2 uploads in all)");
 
   const int* size = scene.Window->GetSize();
@@ -279,23 +244,34 @@ void PartPolarCap(int argc, char* argv[], bool& imageOk)
   std::snprintf(what, sizeof(what),
     "registration of the cap against the base in 62..72 N: shift (%.2f, %.2f) px, mean |diff| %.1f",
     fx, fy, best);
-  Expect(std::hypot(fx, fy) < 0.5, what);
+  Check.Expect(std::hypot(fx, fy) < 0.5, what);
 
   // No seam: every covered pixel lies between the two layers' colours (a hole or a line of
-  // base colour would not).
+  // base colour would not). "Between" takes the 3 x 3 neighbourhood of both pictures: the
+  // composition's program is not the single layers' programs, and a sub-pixel difference in a
+  // texture coordinate moves a sharp coastline by a fraction of a pixel.
   int covered = 0, outside = 0, nearPole = 0, poleMismatch = 0;
   for (size_t i = 0; i < llh.size(); ++i)
   {
-    if (std::isnan(llh[i][0]))
+    const int x = static_cast<int>(i % w), y = static_cast<int>(i / w);
+    if (std::isnan(llh[i][0]) || x == 0 || y == 0 || x == w - 1 || y == h - 1)
     {
       continue;
     }
     ++covered;
     for (int k = 0; k < 3; ++k)
     {
-      const int lo = std::min(imageBase[3 * i + k], imageCap[3 * i + k]) - 2;
-      const int hi = std::max(imageBase[3 * i + k], imageCap[3 * i + k]) + 2;
-      if (imageBoth[3 * i + k] < lo || imageBoth[3 * i + k] > hi)
+      int lo = 255, hi = 0;
+      for (int dy = -1; dy <= 1; ++dy)
+      {
+        for (int dx = -1; dx <= 1; ++dx)
+        {
+          const size_t j = 3 * (i + dy * w + dx) + k;
+          lo = std::min({ lo, static_cast<int>(imageBase[j]), static_cast<int>(imageCap[j]) });
+          hi = std::max({ hi, static_cast<int>(imageBase[j]), static_cast<int>(imageCap[j]) });
+        }
+      }
+      if (imageBoth[3 * i + k] < lo - 2 || imageBoth[3 * i + k] > hi + 2)
       {
         ++outside;
         break;
@@ -308,10 +284,11 @@ void PartPolarCap(int argc, char* argv[], bool& imageOk)
     }
   }
   // (A pixel may round differently at a layer's anti-aliased edge: allow 1 in 10,000.)
-  std::snprintf(what, sizeof(what), "no seam: %d of %d pixels outside the two layers' colours", outside, covered);
-  Expect(covered > 20000 && outside <= covered / 10000, what);
+  std::snprintf(what, sizeof(what), "no seam: %d of %d pixels outside the two layers' colours",
+    outside, covered);
+  Check.Expect(covered > 20000 && outside == 0, what);
   std::snprintf(what, sizeof(what), "no pinch: %d of %d pixels above 85 N differ from the cap", poleMismatch, nearPole);
-  Expect(nearPole > 500 && poleMismatch == 0, what);
+  Check.Expect(nearPole > 500 && poleMismatch == 0, what);
   imageOk = vtkRegressionTestImageThreshold(scene.Window, 0.05) == vtkTesting::PASSED;
 }
 
@@ -358,8 +335,8 @@ void PartSynthetic()
   {
     scene.Look(v.Camera, v.Target, 40.0);
     scene.Render();
-    const auto image = Pixels(scene.Window);
-    const auto llh = Geodetic(scene);
+    const auto image = vtkGlobeTest::ReadPixels(scene.Window);
+    const auto llh = vtkGlobeTest::GeodeticPixels(scene);
     for (size_t p = 0; p < llh.size(); ++p)
     {
       if (std::isnan(llh[p][0]))
@@ -405,7 +382,7 @@ void PartSynthetic()
   std::snprintf(what, sizeof(what),
     "%d pixels (equirectangular %d, polar %d, UTM %d): %d show another texel than the exact "
     "projection's", checked, perLayer[0], perLayer[1], perLayer[2], wrong);
-  Expect(perLayer[0] > 2000 && perLayer[1] > 2000 && perLayer[2] > 2000 && wrong == 0, what);
+  Check.Expect(perLayer[0] > 2000 && perLayer[1] > 2000 && perLayer[2] > 2000 && wrong == 0, what);
 }
 void PartQualityWeight()
 {
@@ -458,7 +435,7 @@ void PartQualityWeight()
     std::snprintf(what, sizeof(what), "at %2.0f N: (%.3f %.3f %.3f), expected (%.3f %.3f %.3f)", lat,
       pixel[0] / 255.0, pixel[1] / 255.0, pixel[2] / 255.0, expected[0], expected[1], expected[2]);
     delete[] pixel;
-    Expect(worst < 0.01, what);
+    Check.Expect(worst < 0.01, what);
   }
 }
 } // namespace
@@ -470,6 +447,5 @@ int TestGlobeProjectedLayers(int argc, char* argv[])
   PartPolarCap(argc, argv, image);
   PartSynthetic();
   PartQualityWeight();
-  std::printf("%s\n", ok ? "numeric checks passed" : "numeric checks FAILED");
-  return ok && image ? 0 : 1;
+  return Check.Result() == 0 && image ? 0 : 1;
 }

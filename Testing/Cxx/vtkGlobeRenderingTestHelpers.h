@@ -27,6 +27,7 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <algorithm>
@@ -220,10 +221,10 @@ inline bool LayerUV(vtkGlobeLayer* layer, double lon, double lat, double& u, dou
   return true;
 }
 
-/// A height layer's value at (lon, lat) in degrees as the GPU samples it at level 0: bilinear
-/// between texel centres, clamped at the edges, wrapped in longitude for global layers.
-/// Returns false outside the layer.
-inline bool SampleHeight(vtkGlobeLayer* layer, double lon, double lat, double& value)
+/// One component of a layer's data at (lon, lat) in degrees as the GPU samples it at level 0:
+/// bilinear between texel centres, clamped at the edges, wrapped in longitude for global
+/// layers (raw values: metres, or 0..255 for images). Returns false outside the layer.
+inline bool SampleLayer(vtkGlobeLayer* layer, double lon, double lat, int component, double& value)
 {
   double u, v;
   if (!LayerUV(layer, lon, lat, u, v) || u < 0 || u > 1 || v < 0 || v > 1)
@@ -236,7 +237,7 @@ inline bool SampleHeight(vtkGlobeLayer* layer, double lon, double lat, double& v
   auto at = [&](int i, int j) {
     i = wrap ? ((i % w) + w) % w : std::max(0, std::min(i, w - 1));
     j = std::max(0, std::min(j, h - 1));
-    return data->GetComponent(static_cast<vtkIdType>(j) * w + i, 0);
+    return data->GetComponent(static_cast<vtkIdType>(j) * w + i, component);
   };
   const double x = u * w - 0.5, y = v * h - 0.5;
   const int i = static_cast<int>(std::floor(x)), j = static_cast<int>(std::floor(y));
@@ -244,6 +245,22 @@ inline bool SampleHeight(vtkGlobeLayer* layer, double lon, double lat, double& v
   value = (1 - fy) * ((1 - fx) * at(i, j) + fx * at(i + 1, j)) +
     fy * ((1 - fx) * at(i, j + 1) + fx * at(i + 1, j + 1));
   return true;
+}
+
+/// A height layer's value (m) at (lon, lat) in degrees as the GPU samples it at level 0.
+inline bool SampleHeight(vtkGlobeLayer* layer, double lon, double lat, double& value)
+{
+  return SampleLayer(layer, lon, lat, 0, value);
+}
+
+/// The window's RGB pixels (3 bytes each), row 0 at the bottom.
+inline std::vector<unsigned char> ReadPixels(vtkRenderWindow* window)
+{
+  const int* size = window->GetSize();
+  unsigned char* data = window->GetPixelData(0, 0, size[0] - 1, size[1] - 1, 0);
+  std::vector<unsigned char> rgb(data, data + 3 * size[0] * size[1]);
+  delete[] data;
+  return rgb;
 }
 
 /// Along-ray error of a depth-reconstructed point at eye distance z: 4 steps of a 24-bit depth
@@ -649,6 +666,29 @@ inline TerrainCheck CheckTerrain(Scene& scene, int stride, vtkGlobeDepthPass* de
     result.Pixels, result.MedianError, result.WorstError, result.WorstRatio, result.Failures,
     result.NaNs, result.Where.c_str());
   return result;
+}
+
+/// The depth-reconstructed geodetic position (deg, deg, m) of every pixel, row 0 at the
+/// bottom; NaN where nothing is drawn.
+inline std::vector<std::array<double, 3>> GeodeticPixels(Scene& scene)
+{
+  const int* size = scene.Window->GetSize();
+  const std::vector<float> depth = ReadDepth(scene.Window);
+  std::vector<std::array<double, 3>> llh(depth.size(), { NAN, NAN, NAN });
+  for (int y = 0; y < size[1]; ++y)
+  {
+    for (int x = 0; x < size[0]; ++x)
+    {
+      const size_t i = static_cast<size_t>(y) * size[0] + x;
+      if (depth[i] < 1.0f)
+      {
+        double p[3];
+        UnprojectPixel(scene.Renderer, x + 0.5, y + 0.5, depth[i], p);
+        scene.Body->CartesianToGeodetic(p, llh[i].data());
+      }
+    }
+  }
+  return llh;
 }
 
 /// Counts pixels whose depth is not the background's.

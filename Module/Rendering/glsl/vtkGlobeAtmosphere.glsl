@@ -81,3 +81,35 @@ vec3 globe_atmPhased(vec3 rayleigh, vec3 mie, vec3 ray, vec3 light, float intens
     pow(max(1.0 + g * g - 2.0 * g * c, 1e-6), 1.5);
   return intensity * (phaseR * rayleigh + phaseM * mie);
 }
+
+// The atmosphere along a pixel's ray: from the eye (or where the ray enters the shell) to
+// tEnd (the ground) or, for tEnd < 0, to where the ray meets the body or leaves the shell.
+// inscatter is tone-mapped; false where the ray misses the shell.
+bool globe_atmosphereAlong(vec3 eye, vec3 ray, float tEnd, vec3 light, float intensity,
+  out vec3 inscatter, out vec3 transmittance)
+{
+  float t0, t1, g0, g1;
+  inscatter = vec3(0.0);
+  transmittance = vec3(1.0);
+  if (!globe_atmSphere(eye, ray, globe_atmOuter, t0, t1))
+  {
+    return false;
+  }
+  t0 = max(t0, 0.0);
+  if (tEnd >= 0.0)
+  {
+    t1 = tEnd;
+  }
+  else if (globe_atmSphere(eye, ray, globe_atmInner, g0, g1) && g0 > 0.0)
+  {
+    t1 = g0;
+  }
+  if (t1 <= t0)
+  {
+    return false;
+  }
+  vec3 rayleigh, mie;
+  globe_atmosphere(eye, ray, t0, t1, light, rayleigh, mie, transmittance);
+  inscatter = 1.0 - exp(-globe_atmPhased(rayleigh, mie, ray, light, intensity));
+  return true;
+}
