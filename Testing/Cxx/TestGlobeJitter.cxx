@@ -1,5 +1,7 @@
 // Sub-pixel jitter (issue 5, Documentation/depth.md "Jitter"): Cozzi's scene, a point at
-// (6378137, 0, 0) and two 2 m triangles 1 m apart in the plane x = 6378137, over a flat WGS84
+// (6378137, 0, 0) (the look-at target and the local origin; a rasterized point lands on whole
+// pixels and cannot be read to 0.05 px, the triangles around it are) and two 2 m triangles
+// 1 m apart in the plane x = 6378137, over a flat WGS84
 // terrain (a global height layer of -0.5 m, so the terrain is the plane's neighbour without
 // z-fighting it), seen from 1 m, 10 m and 800 m at 45 degrees elevation. The camera then moves
 // sideways by 0.05 .. 0.5 px (10 steps); in every pose and in both depth modes:
