@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 vtkStandardNewMacro(vtkGlobeClippingRange);
 vtkInformationKeyMacro(vtkGlobeClippingRange, POLICY, ObjectBase);
@@ -47,32 +48,77 @@ struct LocalTerrain
 };
 
 /**
- * Bounds the composed terrain within `radius` metres of (lon, lat). Layers compose bottom
- * first, each replacing what is below by its coverage weight (vtkGlobeLayerSet: extent, voids,
- * an 8-texel feathered border), so a layer that covers the whole window with full weight
- * decides the terrain there (its bilinear height at the point, its posts' maximum and slope),
- * and one that covers part of it can only raise the maximum. Layers that cannot be sampled in
- * longitude/latitude raise it to their maximum.
+ * Bounds the composed terrain within `radius` metres of (lon, lat). Layers compose in
+ * vtkGlobeLayerSet's order (DrawOrder, then as added), each by its blend mode and weight
+ * (coverage: extent, voids, an 8-texel feathered border; times opacity):
+ * - Replace mixes towards the layer: one that covers the whole window with full weight decides
+ *   the terrain there (its bilinear height at the point, its posts' maximum and slope); with
+ *   less weight somewhere the result is at most the larger of the two maxima;
+ * - Add adds weight * value: the maximum grows by the layer's maximum (by its positive part
+ *   where the weight may be below 1); with full weight the point and slope add exactly;
+ * - Average (a run of layers replaced by their weighted mean) is at most the larger maximum.
+ * Layers that cannot be sampled in longitude/latitude (projected ones, missing data) enter with
+ * their data maximum by the same rules, so the near plane stays in front of them.
  */
 LocalTerrain ComputeLocalTerrain(vtkGlobeMapper* mapper, double lon, double lat, double radius,
   double metresPerDegree)
 {
   LocalTerrain result;
+  result.Exact = true; // composition starts from 0 everywhere
+  std::vector<vtkGlobeLayer*> order;
   for (int l = 0; l < mapper->GetNumberOfLayers(); ++l)
   {
     vtkGlobeLayer* layer = mapper->GetLayer(l);
-    if (!layer || layer->GetRole() != vtkGlobeLayer::Height || !layer->IsValid())
+    if (layer && layer->GetRole() == vtkGlobeLayer::Height && layer->GetEnabled() &&
+      layer->IsValid())
     {
-      continue;
+      order.push_back(layer);
     }
+  }
+  std::stable_sort(order.begin(), order.end(),
+    [](vtkGlobeLayer* a, vtkGlobeLayer* b) { return a->GetDrawOrder() < b->GetDrawOrder(); });
+  // A layer's window maximum (and, with full weight, its point height and slope) into the
+  // result by its blend mode.
+  auto compose = [&result](vtkGlobeLayer* layer, bool fullWeight, double top, bool exact,
+                   double nadir, double slope) {
+    const bool full = fullWeight && layer->GetOpacity() >= 1.0;
+    switch (layer->GetBlendMode())
+    {
+      case vtkGlobeLayer::Add:
+        result.Top += full ? top : std::max(0.0, top);
+        result.Exact = result.Exact && full && exact;
+        result.Nadir += nadir;
+        result.Slope += slope;
+        break;
+      case vtkGlobeLayer::Average:
+        result.Top = std::max(result.Top, top);
+        result.Exact = false;
+        break;
+      default:
+        if (full)
+        {
+          result.Top = top;
+          result.Exact = exact;
+          result.Nadir = nadir;
+          result.Slope = slope;
+        }
+        else
+        {
+          result.Top = std::max(result.Top, top);
+          result.Exact = false;
+        }
+    }
+  };
+  for (vtkGlobeLayer* layer : order)
+  {
     double e[4];
     layer->GetGeographicExtent(e);
     vtkDataArray* data = layer->GetData();
     const int w = layer->GetWidth(), h = layer->GetHeight();
-    if (!data || w <= 0 || h <= 0 || !std::isfinite(e[0]) || !std::isfinite(e[3]))
+    if (layer->GetModelType() != vtkGlobeLayer::Geographic || !data || w <= 0 || h <= 0 ||
+      !std::isfinite(e[0]) || !std::isfinite(e[3]))
     {
-      result.Top = std::max(result.Top, layer->GetMaximumValue());
-      result.Exact = false;
+      compose(layer, false, layer->GetMaximumValue(), false, 0.0, 0.0);
       continue;
     }
     const double cosLat = std::max(std::cos(vtkMath::RadiansFromDegrees(lat)), 1e-3);
@@ -102,8 +148,7 @@ LocalTerrain ComputeLocalTerrain(vtkGlobeMapper* mapper, double lon, double lat,
     // More than 64 texels each way: the layer's maximum is a good enough bound.
     if (dLon > 64.0 * texelX || dLat > 64.0 * texelY)
     {
-      result.Top = replaces ? layer->GetMaximumValue() : std::max(result.Top, layer->GetMaximumValue());
-      result.Exact = false;
+      compose(layer, replaces, layer->GetMaximumValue(), false, 0.0, 0.0);
       continue;
     }
     auto at = [&](int i, int j) {
@@ -130,23 +175,17 @@ LocalTerrain ComputeLocalTerrain(vtkGlobeMapper* mapper, double lon, double lat,
         slope = std::max(slope, std::sqrt(sx * sx + sy * sy));
       }
     }
+    double nadir = 0.0;
     if (replaces)
     {
       const double u = x / texelX - 0.5, v = y / texelY - 0.5;
       const int i = static_cast<int>(std::floor(u)), j = static_cast<int>(std::floor(v));
       const double fx = u - i, fy = v - j;
-      result.Nadir = (1 - fy) * ((1 - fx) * at(i, j) + fx * at(i + 1, j)) +
+      nadir = (1 - fy) * ((1 - fx) * at(i, j) + fx * at(i + 1, j)) +
         fy * ((1 - fx) * at(i, j + 1) + fx * at(i + 1, j + 1));
-      result.Top = top;
-      // Both axes' differences of a cell can combine: sqrt(2) covers the diagonal.
-      result.Slope = std::sqrt(2.0) * slope;
-      result.Exact = true;
     }
-    else
-    {
-      result.Top = std::max(result.Top, top);
-      result.Exact = false;
-    }
+    // Both axes' differences of a cell can combine: sqrt(2) covers the diagonal.
+    compose(layer, replaces, top, replaces, nadir, std::sqrt(2.0) * slope);
   }
   return result;
 }

@@ -34,6 +34,10 @@ list(APPEND globe_rendering_tests
   TestGlobeDeadSea.cxx
   TestGlobeInsideBody.cxx
   TestGlobePGMErrata.cxx)
+# Precision: sub-pixel jitter of the globe and a companion actor; the satellite over the limb.
+list(APPEND globe_rendering_tests
+  TestGlobeJitter.cxx
+  TestGlobeSatelliteLimb.cxx)
 
 create_test_sourcelist(_globe_rendering_driver_sources GlobeRenderingCxxTests.cxx
   ${globe_rendering_tests}

@@ -210,6 +210,37 @@ int TestGlobeClippingRange(int, char*[])
   ok &= highRange[1] / highRange[0] < 1.6 && highRange[1] >= highFarthest;
   ok &= highInside > 5000 && highMissing == 0;
 
+  // Blend modes: a +300 m Add layer over the Rainier window (0.4 degrees square, 111 m texels):
+  // the ground is the inset plus 300 m. The old replace-only rule took the layer's 300 m for the
+  // ground and put the near plane ~1,700 m beyond it.
+  {
+    vtkGlobeTest::Scene added;
+    added.AddEarthLayers(true, false);
+    std::vector<float> raise(400 * 400, 300.0f);
+    vtkNew<vtkGlobeLayer> addLayer;
+    addLayer->SetHeightData(400, 400, raise.data(), lon - 0.2, lon + 0.2, lat - 0.2, lat + 0.2);
+    addLayer->SetBlendModeToAdd();
+    added.Mapper->AddLayer(addLayer);
+    const std::vector<vtkGlobeLayer*> addedLayers = vtkGlobeTest::HeightLayers(added.Mapper);
+    for (vtkGlobeLayer* layer : addedLayers)
+    {
+      layer->Update();
+    }
+    const double raised = vtkGlobeTest::ComposedHeight(addedLayers, lon, lat);
+    const double cam2[3] = { lon, lat, raised + 2.0 }, target2[3] = { -121.0, 46.85, raised + 2.0 };
+    vtkGlobeClippingRange::Install(added.Renderer);
+    added.Look(cam2, target2, 50.0);
+    double addedRange[2];
+    added.Renderer->GetActiveCamera()->GetClippingRange(addedRange);
+    added.Render();
+    const int addedBottom = BottomCovered(added, 4);
+    std::printf("  2 m over an Add layer (ground %.1f + 300 = %.1f m): near %.3f m, bottom 4 rows "
+                "%d of %d covered\n",
+      ground, raised, addedRange[0], addedBottom, 4 * width);
+    ok &= std::abs(raised - ground - 300.0) < 1e-3;
+    ok &= addedRange[0] > 0.2 && addedRange[0] < 2.0 && addedBottom == 4 * width;
+  }
+
   std::printf("%s\n", ok ? "checks passed" : "checks FAILED");
   return ok ? 0 : 1;
 }
