@@ -74,6 +74,60 @@ void globe_lonLatFromNormal(vec3 n, GLOBE_OUT(float) lon, GLOBE_OUT(float) lat)
   lat = globe_atan2(n.z, sqrt(n.x * n.x + n.y * n.y));
 }
 
+// atan2(y, x) with full relative accuracy for small angles (|y| <= x / 16: odd Taylor series,
+// relative error < 1e-13), globe_atan2 beyond. The offsets of a local origin are small angles,
+// and globe_atan2's polynomial is accurate only to 2e-8 rad absolutely (13 cm on the Earth).
+float globe_atan2Offset(float y, float x)
+{
+  if (x > 0.0f && abs(y) <= 0.0625f * x)
+  {
+    float t = y / x;
+    float t2 = t * t;
+    return t * (1.0f - t2 * (0.33333333333333333f - t2 * (0.2f - t2 * (0.14285714285714286f -
+      t2 * 0.11111111111111111f))));
+  }
+  return globe_atan2(y, x);
+}
+
+// Geodetic longitude and latitude, each as a hi + lo pair, of the point in direction
+// reference + offset (body scaled space), from a local origin: `reference` is a direction
+// whose (lon, lat) the CPU computed in double and passes as hi + lo (referenceLonLat: lon hi,
+// lon lo, lat hi, lat lo), `offset` the (small) difference of the point's direction from it.
+// Only products of the offset are formed, never a difference of two numbers near 1 or pi, so
+// (lonHi + lonLo, latHi + latLo) is as precise as the offset (a float longitude near +-pi is
+// 1.5 m on the Earth; a float unit direction 0.4 m). The longitude is not wrapped: the sum may
+// pass +-pi by the offset. A reference on the polar axis has no longitude: there the point's
+// own longitude is taken (lo = 0; within 6 m of the axis a float longitude is 1.5 mm per km
+// from it).
+void globe_geodeticFromOffset(vec3 reference, vec4 referenceLonLat, vec3 offset,
+  vec3 radiiScaled, GLOBE_OUT(float) lonHi, GLOBE_OUT(float) lonLo, GLOBE_OUT(float) latHi,
+  GLOBE_OUT(float) latLo)
+{
+  // Geodetic normals point along direction / radii: only angles of these are needed.
+  vec3 q0 = reference / radiiScaled;
+  vec3 dq = offset / radiiScaled;
+  vec3 q = q0 + dq;
+  float rho02 = q0.x * q0.x + q0.y * q0.y;
+  float rho0 = sqrt(rho02);
+  float rho = sqrt(q.x * q.x + q.y * q.y);
+  // rho - rho0 and the angles between (rho0, q0.z) and (rho, q.z), and between q0.xy and q.xy,
+  // as atan2(cross, dot) with the cross products in the offset only.
+  float dRho = (dq.x * (2.0f * q0.x + dq.x) + dq.y * (2.0f * q0.y + dq.y)) / max(rho + rho0, 1e-30f);
+  latHi = referenceLonLat.z;
+  latLo = referenceLonLat.w + globe_atan2Offset(rho0 * dq.z - q0.z * dRho, rho0 * rho + q0.z * q.z);
+  if (rho02 > 1e-12f)
+  {
+    lonHi = referenceLonLat.x;
+    lonLo = referenceLonLat.y +
+      globe_atan2Offset(q0.x * dq.y - q0.y * dq.x, q0.x * q.x + q0.y * q.y);
+  }
+  else
+  {
+    lonHi = globe_atan2(q.y, q.x);
+    lonLo = 0.0f;
+  }
+}
+
 // Unit normal of the ellipsoid at a point on (or near) its surface: normalize(p / radii^2).
 vec3 globe_geodeticSurfaceNormal(vec3 p, vec3 radii)
 {
