@@ -74,17 +74,19 @@ void globe_lonLatFromNormal(vec3 n, GLOBE_OUT(float) lon, GLOBE_OUT(float) lat)
   lat = globe_atan2(n.z, sqrt(n.x * n.x + n.y * n.y));
 }
 
-// atan2(y, x) with full relative accuracy for small angles (|y| <= x / 16: odd Taylor series,
-// relative error < 1e-13), globe_atan2 beyond. The offsets of a local origin are small angles,
-// and globe_atan2's polynomial is accurate only to 2e-8 rad absolutely (13 cm on the Earth).
+// atan2(y, x) with full relative accuracy for angles up to 14 degrees (|y| <= x / 4: odd Taylor
+// series, relative error < 2e-11), globe_atan2 beyond. The offsets from a local origin are such
+// angles, and globe_atan2's polynomial is accurate only to 2e-8 rad absolutely (13 cm on the
+// Earth).
 float globe_atan2Offset(float y, float x)
 {
-  if (x > 0.0f && abs(y) <= 0.0625f * x)
+  if (x > 0.0f && abs(y) <= 0.25f * x)
   {
     float t = y / x;
     float t2 = t * t;
     return t * (1.0f - t2 * (0.33333333333333333f - t2 * (0.2f - t2 * (0.14285714285714286f -
-      t2 * 0.11111111111111111f))));
+      t2 * (0.11111111111111111f - t2 * (0.09090909090909091f - t2 * (0.07692307692307693f -
+      t2 * 0.06666666666666667f)))))));
   }
   return globe_atan2(y, x);
 }
