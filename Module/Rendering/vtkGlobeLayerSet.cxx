@@ -544,15 +544,17 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
   s << "const float globe_TwoPi = 6.283185307179586;\n";
   if (hp)
   {
-    // map: (west hi, longitude span, north hi, latitude span), mapLo: (west lo, north lo); the
-    // west edge is in the local origin's turn, so for a pixel on the layer the hi differences
-    // are of nearby numbers (exact) and no whole turn is rounded.
+    // map: (west hi, longitude span, north hi, latitude span), mapLo: (west lo, north lo). The
+    // hi parts of the edges and of (lon, lat) lie on the 2^-12 rad grid of globe_splitOnGrid,
+    // so their differences are exact; a negative one takes a whole turn in hi + lo.
     s << "uniform vec3 globeReferenceDirection;\n"
          "uniform vec4 globeGeodeticReference;\n"
          "vec2 globe_geographicUV(float lonHi, float lonLo, float latHi, float latLo, vec4 map,\n"
          "  vec2 mapLo)\n"
          "{\n"
-         "  float dLon = (lonHi - map.x) + (lonLo - mapLo.x);\n"
+         "  float hd = lonHi - map.x;\n"
+         "  float k = hd < 0.0 ? 1.0 : 0.0;\n"
+         "  float dLon = (hd + k * GLOBE_TWO_PI_HI) + ((lonLo - mapLo.x) + k * GLOBE_TWO_PI_LO);\n"
          "  float dLat = (map.z - latHi) + (mapLo.y - latLo);\n"
          "  return vec2(mod(dLon, globe_TwoPi) / map.y, dLat / map.w);\n"
          "}\n";
@@ -806,6 +808,13 @@ std::array<float, 2> Split(double v)
   const float hi = static_cast<float>(v);
   return { hi, static_cast<float>(v - hi) };
 }
+
+// The same with hi on the 2^-12 grid (globe_splitOnGrid in globe_ellipsoid.glsl).
+std::array<float, 2> OnGrid(double v)
+{
+  const double hi = std::floor(v * 4096.0 + 0.5) / 4096.0;
+  return { static_cast<float>(hi), static_cast<float>(v - hi) };
+}
 } // namespace
 
 void vtkGlobeLayerSet::BindTextures(vtkShaderProgram* program, int roles)
@@ -851,13 +860,11 @@ void vtkGlobeLayerSet::BindTextures(vtkShaderProgram* program, int roles)
         std::max(valid[0], -FloatLimit), std::min(valid[1], FloatLimit) };
       if (hp && e->Function.empty())
       {
-        // The west edge in the local origin's turn (the layer's centre within half a turn of
-        // the origin), split into hi + lo, and the north edge likewise.
+        // The edges as hi + lo with hi on globe_splitOnGrid's 2^-12 rad grid (GLSL's
+        // GLOBE_HI_GRID), the west edge in [-pi, pi).
         const double twoPi = 2.0 * vtkMath::Pi();
-        const double centre = e->Map[0] + 0.5 * e->Map[1];
-        const double west =
-          e->Map[0] + twoPi * std::round((this->ReferenceLonLat[0] - centre) / twoPi);
-        const std::array<float, 2> w = Split(west), n = Split(e->Map[2]);
+        const double west = e->Map[0] - twoPi * std::floor((e->Map[0] + vtkMath::Pi()) / twoPi);
+        const std::array<float, 2> w = OnGrid(west), n = OnGrid(e->Map[2]);
         const float map[4] = { w[0], static_cast<float>(e->Map[1]), n[0],
           static_cast<float>(e->Map[3]) };
         const float lo[2] = { w[1], n[1] };

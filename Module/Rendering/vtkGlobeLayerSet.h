@@ -115,9 +115,9 @@ public:
    * The frame's local origin: a direction in the body's scaled space (x/a, y/b, z/c) and the
    * body's radii (m). Its geodetic (lon, lat) is computed here in double; BindTextures() passes
    * it as hi + lo (uniform vec4 globeGeodeticReference) with the direction (uniform vec3
-   * globeReferenceDirection), and places each geographic layer's edges in the origin's turn of
-   * longitude. Changes every frame and rebuilds nothing (no Modified()). vtkGlobeGridPass sets
-   * it to the camera's sub-point before it composes heights.
+   * globeReferenceDirection); the passes turn the G-buffer's offsets from it into (lon, lat)
+   * with globe_geodeticFromOffset. Changes every frame and rebuilds nothing (no Modified()).
+   * vtkGlobeGridPass sets it to the camera's sub-point before it composes heights.
    */
   void SetGeodeticReference(const double direction[3], const double radii[3]);
   /// The local origin's (lon, lat) in radians.

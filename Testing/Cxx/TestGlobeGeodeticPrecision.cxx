@@ -1,5 +1,6 @@
 // Geodetic precision (issue 5, Documentation/rendering.md "Geodetic precision"): 0.5 m data must
-// be placed as precisely at lon = +-179.99 degrees and lat = +-80 degrees as at (0, 0).
+// be placed as precisely at lon = +-179.99 degrees (and across 180) and lat = +-80 degrees as at
+// (0, 0).
 //  A. CPU mirror: globe_geodeticFromOffset (the shader text, in float) against GeographicLib
 //     for points 0.1 m .. 100 km from a local origin at each place; the float path
 //     (globe_lonLatFromNormal of a float unit direction) for comparison.
@@ -12,6 +13,8 @@
 //  C. Height: a 2 m ramp (slope 2, 0.25 m posts) rising to the north-east at each place; the
 //     depth-reconstructed surface in the middle of the ramp lies where the data puts it
 //     (horizontal misplacement = height error / slope).
+//  D. Far from the local origin (a hemisphere, the date line, a polar stereographic layer) the
+//     picture is the same with the option on and off.
 // The far places must be as good as (0, 0) with the option on, and measurably worse off (so the
 // option demonstrably matters); switching it rebuilds the shaders once, not every frame.
 #include "vtkGlobeCompositePass.h"
@@ -34,8 +37,10 @@ struct Place
   const char* Name;
   double Lon, Lat; // degrees
 };
+// The last straddles the date line: its insets reach from 179.99998 to 180.00002 degrees.
 const Place Places[] = { { "(0, 0)", 0.001, 0.001 }, { "(+179.99, +80)", 179.99, 80.0 },
-  { "(-179.99, -80)", -179.99, -80.0 }, { "(+179.99, 0)", 179.99, 0.001 } };
+  { "(-179.99, -80)", -179.99, -80.0 }, { "(+179.99, 0)", 179.99, 0.001 },
+  { "(180, 30)", 180.0, 30.0 } };
 
 // Degrees of latitude and longitude per metre at a place.
 void DegreesPerMetre(vtkGlobeEllipsoid* body, double lon, double lat, double& perLon, double& perLat)
@@ -238,7 +243,8 @@ void MeasureChecker(vtkGlobeTest::Scene& scene, const Place& place, Measure& m)
       }
       gErrors.push_back(vtkGlobeTest::Distance(g, hit));
 
-      const double fx = (llh[0] - west) / cellLon, fy = (north - llh[1]) / cellLat;
+      const double fx = std::remainder(llh[0] - west, 360.0) / cellLon;
+      const double fy = (north - llh[1]) / cellLat;
       const double i = std::floor(fx), j = std::floor(fy);
       const double edge = 0.5 * std::min({ fx - i, i + 1 - fx, fy - j, j + 1 - fy }); // m
       if (i < 0 || j < 0 || i >= cells || j >= cells || edge < 0.01)
@@ -305,11 +311,49 @@ void MeasureRamp(vtkGlobeTest::Scene& scene, const Place& place, Measure& m)
     m.RampWorst = std::max(m.RampWorst, std::abs(p[2] - data) / slope);
   }
 }
+// D: far from the local origin the hi + lo pairs must still wrap at the date line and pass
+// projections' domain checks: the whole hemisphere over (170 E, 40 N) from 8,000 km, with the
+// global imagery and the EPSG:3413 polar cap (~50 degrees from the origin), rendered with the
+// option on and off, must give the same picture (differences: rounding at a few pixels).
+void CheckFarFromOrigin(vtkGlobeTest::Checklist& check)
+{
+  vtkGlobeTest::Scene scene(300, 225, 256);
+  vtkGlobeClippingRange::Install(scene.Renderer);
+  scene.Mapper->LightingOff();
+  scene.Mapper->AddLayer(vtkGlobeTest::FileLayer("earth/world.tif", false));
+  scene.Mapper->AddLayer(vtkGlobeTest::FileLayer("earth/world_north_polar_3413.tif", false));
+  const double camera[3] = { 170.0, 40.0, 8.0e6 }, target[3] = { 170.0, 55.0, 0.0 };
+  scene.Look(camera, target, 60.0);
+  std::vector<unsigned char> images[2];
+  for (bool highPrecision : { true, false })
+  {
+    scene.Mapper->SetHighPrecisionGeodetic(highPrecision);
+    scene.Render();
+    images[highPrecision ? 0 : 1] = vtkGlobeTest::ReadPixels(scene.Window);
+  }
+  const std::vector<float> depth = vtkGlobeTest::ReadDepth(scene.Window);
+  int covered = 0, differ = 0;
+  for (size_t i = 0; i < depth.size(); ++i)
+  {
+    covered += depth[i] < 1.0f ? 1 : 0;
+    int d = 0;
+    for (int k = 0; k < 3; ++k)
+    {
+      d = std::max(d, std::abs(images[0][3 * i + k] - images[1][3 * i + k]));
+    }
+    differ += d > 24 ? 1 : 0;
+  }
+  check.Expect(covered > 20000 && differ < covered / 200,
+    vtkGlobeTest::Printf("D hemisphere over (170 E, 40 N) with the polar cap: on and off differ "
+                         "by more than 24 levels at %d of %d globe pixels",
+      differ, covered));
+}
 } // namespace
 
 int TestGlobeGeodeticPrecision(int, char*[])
 {
   vtkGlobeTest::Checklist check;
+  CheckFarFromOrigin(check);
   vtkGlobeTest::Scene scene(300, 225, 256);
   scene.Mapper->LightingOff();
   // The globe's clipping policy from the first frame on (it installs itself only when drawn).

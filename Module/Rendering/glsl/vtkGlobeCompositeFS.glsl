@@ -44,7 +44,6 @@ void main()
   globe_geodeticFromOffset(globeReferenceDirection, globeGeodeticReference, offset,
     globeRadiiScaled, lonHi, lonLo, latHi, latLo);
   float lon = lonHi + lonLo;
-  lon = lon > 3.14159265 ? lon - 6.28318531 : (lon < -3.14159265 ? lon + 6.28318531 : lon);
 #else
   bool covered = depth < 1.0 && dot(g.xyz, g.xyz) > 0.25;
   vec3 s = covered ? globe_normalize(g.xyz) : vec3(0.0, 0.0, 1.0);
