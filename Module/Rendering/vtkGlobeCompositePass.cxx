@@ -258,11 +258,11 @@ std::string vtkGlobeCompositePass::BuildFragmentShader()
   std::string shade;
   if (colors)
   {
-    sample += "  albedo = globe_composeColor(lon, lat, albedo);\n";
+    sample += "  albedo = globe_composeColor(lonHi, lonLo, latHi, latLo, albedo);\n";
   }
   if (normalMaps)
   {
-    sample += "  vec4 mapNormal = globe_composeNormal(lon, lat);\n";
+    sample += "  vec4 mapNormal = globe_composeNormal(lonHi, lonLo, latHi, latLo);\n";
     normal += "  tangentNormal = mix(globe_normalize(tangentNormal), mapNormal.xyz, mapNormal.w);\n";
   }
   if (has('L'))
@@ -274,13 +274,13 @@ std::string vtkGlobeCompositePass::BuildFragmentShader()
   }
   if (has('N'))
   {
-    sample += "  vec3 nightLights = globe_composeNightLights(lon, lat);\n";
+    sample += "  vec3 nightLights = globe_composeNightLights(lonHi, lonLo, latHi, latLo);\n";
     // Lights fade in across the terminator, judged on the ellipsoid's normal, not the slope.
     shade += "  color += nightLights * (1.0 - smoothstep(-0.1, 0.1, dot(n, globeLightDirection)));\n";
   }
   if (has('S'))
   {
-    sample += "  float water = globe_composeMask(lon, lat);\n";
+    sample += "  float water = globe_composeMask(lonHi, lonLo, latHi, latLo);\n";
     shade += "  vec3 halfway = globe_normalize(globeLightDirection - ray);\n"
              "  color += water * step(0.0, sunUp) * globeSpecular.x * globeLightColor *\n"
              "    pow(max(dot(normal, halfway), 0.0), globeSpecular.y);\n";
@@ -308,7 +308,7 @@ std::string vtkGlobeCompositePass::BuildFragmentShader()
   }
   if (overlays)
   {
-    sample += "  vec4 overlay = globe_composeOverlay(lon, lat);\n";
+    sample += "  vec4 overlay = globe_composeOverlay(lonHi, lonLo, latHi, latLo);\n";
     shade += "  color = color * (1.0 - overlay.a) + overlay.rgb;\n";
   }
   if (has('A'))
@@ -336,7 +336,10 @@ std::string vtkGlobeCompositePass::BuildFragmentShader()
              "  }\n";
   }
   using vtkGlobeShaderSources::Replace;
-  std::string fs = Replace(vtkGlobeCompositeFS, "//GLOBE::Math", vtkGlobeShaderSources::Math());
+  const std::string defines =
+    layers->GetHighPrecisionGeodetic() ? "#define GLOBE_HIGH_PRECISION_GEODETIC\n" : "";
+  std::string fs =
+    Replace(vtkGlobeCompositeFS, "//GLOBE::Math", defines + vtkGlobeShaderSources::Math());
   fs = Replace(fs, "//GLOBE::Layers", layers->GetShaderCode(this->GetRoles()));
   fs = Replace(fs, "//GLOBE::EffectFunctions", functions);
   fs = Replace(fs, "//GLOBE::Sample", sample);

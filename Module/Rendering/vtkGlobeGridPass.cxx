@@ -145,8 +145,11 @@ bool vtkGlobeGridPass::Prepare(vtkOpenGLRenderWindow* window)
   }
   if (!this->HeightQuad)
   {
+    const std::string defines = this->Layers->GetHighPrecisionGeodetic()
+      ? "#define GLOBE_HIGH_PRECISION_GEODETIC\n"
+      : "";
     std::string fs = vtkGlobeShaderSources::Replace(
-      vtkGlobeGridHeightFS, "//GLOBE::Math", vtkGlobeShaderSources::Math());
+      vtkGlobeGridHeightFS, "//GLOBE::Math", defines + vtkGlobeShaderSources::Math());
     fs = vtkGlobeShaderSources::Replace(fs, "//GLOBE::Layers", this->Layers->GetShaderCode(vtkGlobeLayerSet::HeightRoles));
     this->HeightQuad = new vtkOpenGLQuadHelper(window, vs.c_str(), fs.c_str(), "");
     this->HeightShaderKey = key;
@@ -229,11 +232,22 @@ void vtkGlobeGridPass::Render(const vtkRenderState* s)
   window->GetShaderCache()->ReadyShaderProgram(this->HeightQuad->Program);
   p = this->HeightQuad->Program;
   this->DirectionTexture->Activate();
+  this->PositionTexture->Activate();
   p->SetUniformi("globeDirection", this->DirectionTexture->GetTextureUnit());
+  p->SetUniformi("globePosition", this->PositionTexture->GetTextureUnit());
   vtkGlobeShaderSources::SetRadii(p, grid->GetEllipsoid());
+  // The frame's local origin for geodetic coordinates: the camera's sub-point (the grid's
+  // anti-nadir), which the composition of this frame shares through the layer set.
+  const double* nadir = grid->GetNadir();
+  const double subPoint[3] = { -nadir[0], -nadir[1], -nadir[2] };
+  this->Layers->SetGeodeticReference(subPoint, grid->GetEllipsoid()->GetRadii());
+  Uniform3(p, "globeNadir", nadir);
+  Uniform1(p, "globePrimaryAltitude", grid->GetAltitude());
+  Uniform1(p, "globePrimaryRadius", grid->GetPrimaryRadius());
   this->Layers->BindTextures(p, vtkGlobeLayerSet::HeightRoles);
   this->HeightQuad->Render();
   this->Layers->UnbindTextures(vtkGlobeLayerSet::HeightRoles);
+  this->PositionTexture->Deactivate();
   this->DirectionTexture->Deactivate();
   this->Framebuffer->RemoveColorAttachments(1);
   this->HeightTimer->ReusableStop();

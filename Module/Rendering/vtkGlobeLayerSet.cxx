@@ -451,16 +451,37 @@ void EmitBlend(std::ostream& s, int mode, const char* target, const char* v)
   }
 }
 
+// The (lon, lat) a generated function passes to a layer, optionally displaced by small steps
+// (GLSL expressions): hi + lo pairs with the steps added to the lo parts; or, without high
+// precision, one float each (hi = the sum, lo = the step), as before hi + lo existed.
+struct LonLat
+{
+  std::string LonHi, LonLo, LatHi, LatLo;
+};
+LonLat At(bool highPrecision, const char* dLon = nullptr, const char* dLat = nullptr)
+{
+  if (highPrecision)
+  {
+    return { "lonHi", dLon ? std::string("(lonLo + ") + dLon + ")" : "lonLo", "latHi",
+      dLat ? std::string("(latLo + ") + dLat + ")" : "latLo" };
+  }
+  return { "lon", dLon ? dLon : "0.0", "lat", dLat ? dLat : "0.0" };
+}
+
 // The GLSL expression of a layer's texture coordinates at (lon hi + lo, lat hi + lo).
-std::string UV(const Entry* e, const std::string& p, const char* lonHi, const char* lonLo,
-  const char* latHi, const char* latLo)
+std::string UV(const Entry* e, const std::string& p, const LonLat& c, bool highPrecision)
 {
   if (e->Function.empty())
   {
-    return std::string("globe_geographicUV(") + lonHi + " + " + lonLo + ", " + latHi + " + " +
-      latLo + ", " + p + "Map)";
+    if (highPrecision)
+    {
+      return "globe_geographicUV(" + c.LonHi + ", " + c.LonLo + ", " + c.LatHi + ", " + c.LatLo +
+        ", " + p + "Map, " + p + "MapLo)";
+    }
+    return "globe_geographicUV(" + c.LonHi + " + " + c.LonLo + ", " + c.LatHi + " + " + c.LatLo +
+      ", " + p + "Map)";
   }
-  std::string call = e->Function + "(" + lonHi + ", " + lonLo + ", " + latHi + ", " + latLo;
+  std::string call = e->Function + "(" + c.LonHi + ", " + c.LonLo + ", " + c.LatHi + ", " + c.LatLo;
   for (int k = 0; k < 7; ++k)
   {
     call += ", " + p + "Projection[" + std::to_string(k) + "]";
@@ -480,6 +501,8 @@ std::string vtkGlobeLayerSet::GetShaderKey(int roles)
 {
   const auto& in = *this->Internals;
   std::ostringstream key;
+  // The passes' own code differs with the geodetic precision even without layers.
+  key << (this->HighPrecisionGeodetic ? "H:" : "F:");
   for (int role = 0; role < NumberOfRoles; ++role)
   {
     if (!Included(role, roles) || in.Roles[role].empty())
@@ -517,11 +540,33 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
   }
   // Shared helpers: texture coordinates of a geographic layer, the coverage weight with its
   // feathered border, and Kooima's projection-quality weight.
-  s << "const float globe_TwoPi = 6.283185307179586;\n"
-       "vec2 globe_geographicUV(float lon, float lat, vec4 map)\n"
-       "{\n"
-       "  return vec2(mod(lon - map.x, globe_TwoPi) / map.y, (map.z - lat) / map.w);\n"
-       "}\n"
+  const bool hp = this->HighPrecisionGeodetic;
+  s << "const float globe_TwoPi = 6.283185307179586;\n";
+  if (hp)
+  {
+    // map: (west hi, longitude span, north hi, latitude span), mapLo: (west lo, north lo). The
+    // hi parts of the edges and of (lon, lat) lie on the 2^-12 rad grid of globe_splitOnGrid,
+    // so their differences are exact; a negative one takes a whole turn in hi + lo.
+    s << "uniform vec3 globeReferenceDirection;\n"
+         "uniform vec4 globeGeodeticReference;\n"
+         "vec2 globe_geographicUV(float lonHi, float lonLo, float latHi, float latLo, vec4 map,\n"
+         "  vec2 mapLo)\n"
+         "{\n"
+         "  float hd = lonHi - map.x;\n"
+         "  float k = hd < 0.0 ? 1.0 : 0.0;\n"
+         "  float dLon = (hd + k * GLOBE_TWO_PI_HI) + ((lonLo - mapLo.x) + k * GLOBE_TWO_PI_LO);\n"
+         "  float dLat = (map.z - latHi) + (mapLo.y - latLo);\n"
+         "  return vec2(mod(dLon, globe_TwoPi) / map.y, dLat / map.w);\n"
+         "}\n";
+  }
+  else
+  {
+    s << "vec2 globe_geographicUV(float lon, float lat, vec4 map)\n"
+         "{\n"
+         "  return vec2(mod(lon - map.x, globe_TwoPi) / map.y, (map.z - lat) / map.w);\n"
+         "}\n";
+  }
+  s << ""
        "float globe_coverage(vec2 uv, vec4 border)\n"
        "{\n"
        "  if (uv.x < 0.0 || uv.x > 1.0 || uv.y < 0.0 || uv.y > 1.0) return 0.0;\n"
@@ -563,6 +608,10 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
       const std::string p = Prefix(role, i);
       s << "uniform sampler2D " << p << ";\n"
         << "uniform vec4 " << p << "Map;\n";
+      if (hp && list[i]->Function.empty())
+      {
+        s << "uniform vec2 " << p << "MapLo;\n";
+      }
       if (!list[i]->Function.empty())
       {
         s << "uniform vec4 " << p << "Projection[7];\n";
@@ -580,37 +629,39 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
     switch (role)
     {
       case vtkGlobeLayer::Height:
-        s << "float globe_composeHeight(float lon, float lat, out vec2 gradient)\n{\n";
+        s << "float globe_composeHeight(float lonHi, float lonLo, float latHi, float latLo, out vec2 gradient)\n{\n";
         type = "vec3"; // (h, gradient)
         zero = "vec3(0.0)";
         target = "hg";
         s << "  vec3 hg = vec3(0.0);\n";
         break;
       case vtkGlobeLayer::Color:
-        s << "vec3 globe_composeColor(float lon, float lat, vec3 base)\n{\n  vec3 c = base;\n";
+        s << "vec3 globe_composeColor(float lonHi, float lonLo, float latHi, float latLo, vec3 base)\n{\n  vec3 c = base;\n";
         break;
       case vtkGlobeLayer::NormalMap:
         // xyz: the tangent-space normal; w: its summed weight.
-        s << "vec4 globe_composeNormal(float lon, float lat)\n{\n  vec4 c = vec4(0.0, 0.0, 1.0, "
+        s << "vec4 globe_composeNormal(float lonHi, float lonLo, float latHi, float latLo)\n{\n  vec4 c = vec4(0.0, 0.0, 1.0, "
              "0.0);\n";
         type = "vec4";
         zero = "vec4(0.0)";
         break;
       case vtkGlobeLayer::Overlay:
         // Premultiplied: the lit colour becomes lit * (1 - a) + rgb.
-        s << "vec4 globe_composeOverlay(float lon, float lat)\n{\n  vec4 c = vec4(0.0);\n";
+        s << "vec4 globe_composeOverlay(float lonHi, float lonLo, float latHi, float latLo)\n{\n  vec4 c = vec4(0.0);\n";
         type = "vec4";
         zero = "vec4(0.0)";
         break;
       case vtkGlobeLayer::Mask:
-        s << "float globe_composeMask(float lon, float lat)\n{\n  float c = 0.0;\n";
+        s << "float globe_composeMask(float lonHi, float lonLo, float latHi, float latLo)\n{\n  float c = 0.0;\n";
         type = "float";
         zero = "0.0";
         break;
       default:
-        s << "vec3 globe_composeNightLights(float lon, float lat)\n{\n  vec3 c = vec3(0.0);\n";
+        s << "vec3 globe_composeNightLights(float lonHi, float lonLo, float latHi, float latLo)\n{\n  vec3 c = vec3(0.0);\n";
     }
-    s << "  float cosLat = cos(lat);\n"
+    // Without high precision the pairs become one float each (the lo parts are 0.0 there).
+    s << (hp ? "" : "  float lon = lonHi + lonLo;\n") << "  float lat = latHi + latLo;\n"
+      << "  float cosLat = cos(lat);\n"
          "  float w;\n  float sumW = 0.0;\n  "
       << type << " sumV = " << zero << ";\n"
       << "  vec2 uv, uvE, uvN, dx, dy;\n";
@@ -620,7 +671,7 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
       const Entry* e = list[i];
       const std::string p = Prefix(role, i);
       const std::string wraps = e->Wraps ? "true" : "false";
-      s << "  vec2 uv" << i << " = " << UV(e, p, "lon", "0.0", "lat", "0.0") << ";\n"
+      s << "  vec2 uv" << i << " = " << UV(e, p, At(hp), hp) << ";\n"
         << "  vec2 dx" << i << ", dy" << i << ";\n"
         << "  globe_uvDerivatives(uv" << i << ", " << wraps << ", dx" << i << ", dy" << i << ");\n";
     }
@@ -637,8 +688,8 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
       s << "  w = globe_coverage(uv, " << p << "Border) * " << p << "Style.x;\n";
       if (layer->GetProjectionQualityWeight())
       {
-        s << "  uvE = " << UV(e, p, "lon", "1e-3", "lat", "0.0") << ";\n"
-          << "  uvN = " << UV(e, p, "lon", "0.0", "lat", "(lat > 0.0 ? -1e-3 : 1e-3)") << ";\n"
+        s << "  uvE = " << UV(e, p, At(hp, "1e-3"), hp) << ";\n"
+          << "  uvN = " << UV(e, p, At(hp, nullptr, "(lat > 0.0 ? -1e-3 : 1e-3)"), hp) << ";\n"
           << "  w *= globe_quality(uv, uvE, uvN, cosLat, vec2(textureSize(" << p << ", 0)), " << p
           << "Border.z, " << (e->Wraps ? "true" : "false") << ");\n";
       }
@@ -664,8 +715,8 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
           // Jacobian, from offsets passed as the low parts of (lon, lat): exact steps.
           s << "    vec2 perUV = vec2((vE - vW) / (2.0 * texel.x), (vS - vN) / (2.0 * texel.y));\n"
             << "    float eLat = lat > 0.0 ? -1e-4 : 1e-4;\n"
-            << "    vec2 dLon = (" << UV(e, p, "lon", "1e-4", "lat", "0.0") << " - uv) / 1e-4;\n"
-            << "    vec2 dLat = (" << UV(e, p, "lon", "0.0", "lat", "eLat") << " - uv) / eLat;\n"
+            << "    vec2 dLon = (" << UV(e, p, At(hp, "1e-4"), hp) << " - uv) / 1e-4;\n"
+            << "    vec2 dLat = (" << UV(e, p, At(hp, nullptr, "eLat"), hp) << " - uv) / eLat;\n"
             << "    vec2 gi = vec2(dot(perUV, dLon), dot(perUV, dLat));\n";
         }
         s
@@ -722,16 +773,65 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
   if (in.Roles[vtkGlobeLayer::Height].empty())
   {
     // Always defined: the passes call it.
-    s << "float globe_composeHeight(float lon, float lat, out vec2 gradient)\n"
+    s << "float globe_composeHeight(float lonHi, float lonLo, float latHi, float latLo, out vec2 gradient)\n"
          "{\n  gradient = vec2(0.0);\n  return 0.0;\n}\n";
   }
   return s.str();
 }
 
 //------------------------------------------------------------------------------
+void vtkGlobeLayerSet::SetGeodeticReference(const double direction[3], const double radii[3])
+{
+  const double largest = std::max(radii[0], std::max(radii[1], radii[2]));
+  double q[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    this->ReferenceDirection[i] = direction[i];
+    // The geodetic normal of the point in direction d (scaled space) is along d / radii.
+    q[i] = direction[i] / (radii[i] / largest);
+  }
+  this->ReferenceLonLat[0] = std::atan2(q[1], q[0]);
+  this->ReferenceLonLat[1] = std::atan2(q[2], std::hypot(q[0], q[1]));
+}
+
+void vtkGlobeLayerSet::GetGeodeticReference(double lonLat[2])
+{
+  lonLat[0] = this->ReferenceLonLat[0];
+  lonLat[1] = this->ReferenceLonLat[1];
+}
+
+namespace
+{
+// A double as float hi + lo (hi + lo equals it to ~1e-15 relative).
+std::array<float, 2> Split(double v)
+{
+  const float hi = static_cast<float>(v);
+  return { hi, static_cast<float>(v - hi) };
+}
+
+// The same with hi on the 2^-12 grid (globe_splitOnGrid in globe_ellipsoid.glsl).
+std::array<float, 2> OnGrid(double v)
+{
+  const double hi = std::floor(v * 4096.0 + 0.5) / 4096.0;
+  return { static_cast<float>(hi), static_cast<float>(v - hi) };
+}
+} // namespace
+
 void vtkGlobeLayerSet::BindTextures(vtkShaderProgram* program, int roles)
 {
   const auto& in = *this->Internals;
+  const bool hp = this->HighPrecisionGeodetic;
+  if (hp)
+  {
+    const std::array<float, 2> lon = Split(this->ReferenceLonLat[0]);
+    const std::array<float, 2> lat = Split(this->ReferenceLonLat[1]);
+    const float reference[4] = { lon[0], lon[1], lat[0], lat[1] };
+    const float direction[3] = { static_cast<float>(this->ReferenceDirection[0]),
+      static_cast<float>(this->ReferenceDirection[1]),
+      static_cast<float>(this->ReferenceDirection[2]) };
+    program->SetUniform4f("globeGeodeticReference", reference);
+    program->SetUniform3f("globeReferenceDirection", direction);
+  }
   for (int role = 0; role < NumberOfRoles; ++role)
   {
     if (!Included(role, roles))
@@ -758,7 +858,23 @@ void vtkGlobeLayerSet::BindTextures(vtkShaderProgram* program, int roles)
       const double* valid = layer->GetValidRange();
       const double style[4] = { layer->GetOpacity(), layer->GetGamma(),
         std::max(valid[0], -FloatLimit), std::min(valid[1], FloatLimit) };
-      program->SetUniform4f((p + "Map").c_str(), f4(e->Map).data());
+      if (hp && e->Function.empty())
+      {
+        // The edges as hi + lo with hi on globe_splitOnGrid's 2^-12 rad grid (GLSL's
+        // GLOBE_HI_GRID), the west edge in [-pi, pi).
+        const double twoPi = 2.0 * vtkMath::Pi();
+        const double west = e->Map[0] - twoPi * std::floor((e->Map[0] + vtkMath::Pi()) / twoPi);
+        const std::array<float, 2> w = OnGrid(west), n = OnGrid(e->Map[2]);
+        const float map[4] = { w[0], static_cast<float>(e->Map[1]), n[0],
+          static_cast<float>(e->Map[3]) };
+        const float lo[2] = { w[1], n[1] };
+        program->SetUniform4f((p + "Map").c_str(), map);
+        program->SetUniform2f((p + "MapLo").c_str(), lo);
+      }
+      else
+      {
+        program->SetUniform4f((p + "Map").c_str(), f4(e->Map).data());
+      }
       program->SetUniform4f((p + "Style").c_str(), f4(style).data());
       program->SetUniform4f((p + "Border").c_str(), f4(e->Border).data());
       if (!e->Function.empty())
@@ -812,4 +928,7 @@ void vtkGlobeLayerSet::PrintSelf(ostream& os, vtkIndent indent)
        << (e.Active ? " (active)" : " (inactive)") << "\n";
   }
   os << indent << "NumberOfUploads: " << this->NumberOfUploads << "\n";
+  os << indent << "HighPrecisionGeodetic: " << this->HighPrecisionGeodetic << "\n";
+  os << indent << "GeodeticReference: " << vtkMath::DegreesFromRadians(this->ReferenceLonLat[0])
+     << ", " << vtkMath::DegreesFromRadians(this->ReferenceLonLat[1]) << " deg\n";
 }

@@ -5,16 +5,24 @@
  * Holds the layers of a globe (vtkGlobeLayer), uploads each one to a texture when its data
  * changed (and only then: GetNumberOfUploads() counts them), and generates the GLSL that
  * composes the enabled ones, in increasing DrawOrder (ties: the order they were added), one
- * unrolled block per layer:
- *   float globe_composeHeight(float lon, float lat, out vec2 gradient)
+ * unrolled block per layer. (lon, lat) are radians, each as a hi + lo pair (LL below stands
+ * for float lonHi, float lonLo, float latHi, float latLo):
+ *   float globe_composeHeight(LL, out vec2 gradient)
  *       metres, and the gradient per radian of (lon, lat); grid pass and screen pass;
- *   vec3  globe_composeColor(float lon, float lat, vec3 base)     Color layers over a base;
- *   vec4  globe_composeNormal(float lon, float lat)               NormalMap: ENU normal, weight;
- *   float globe_composeMask(float lon, float lat)                 Mask (water = 1);
- *   vec3  globe_composeNightLights(float lon, float lat)          NightLights;
- *   vec4  globe_composeOverlay(float lon, float lat)   Overlay, premultiplied: lit*(1-a) + rgb.
+ *   vec3  globe_composeColor(LL, vec3 base)     Color layers over a base;
+ *   vec4  globe_composeNormal(LL)               NormalMap: ENU normal, weight;
+ *   float globe_composeMask(LL)                 Mask (water = 1);
+ *   vec3  globe_composeNightLights(LL)          NightLights;
+ *   vec4  globe_composeOverlay(LL)              Overlay, premultiplied: lit*(1-a) + rgb.
  * The functions of roles without layers are absent. Each must be called in uniform control
  * flow (they take screen derivatives to choose mipmap levels).
+ *
+ * Geodetic precision (HighPrecisionGeodetic, on by default; Documentation/rendering.md): the
+ * passes give (lon, lat) as a per-frame local origin (SetGeodeticReference, in double on the
+ * CPU, hi + lo uniforms) plus a small offset, and every layer forms its texture coordinates
+ * from differences to its own hi + lo edges or projection reference, so nothing near +-pi is
+ * rounded to float: 0.5 m data is placed as precisely at +-180 degrees as at 0. Off, the
+ * functions add hi + lo into one float first (the earlier path, 1.5 m steps near +-180).
  *
  * A layer's weight is its coverage (inside the extent, not nodata / NaN / outside its valid
  * range, the alpha of images) times its feathered border, its opacity and, if asked for,
@@ -96,6 +104,25 @@ public:
   /// Texture uploads so far (a layer is uploaded when it, or its data, changed).
   vtkGetMacro(NumberOfUploads, int);
 
+  ///@{
+  /// Hi + lo geodetic (lon, lat) from a local origin (default on); part of GetShaderKey().
+  vtkSetMacro(HighPrecisionGeodetic, bool);
+  vtkGetMacro(HighPrecisionGeodetic, bool);
+  vtkBooleanMacro(HighPrecisionGeodetic, bool);
+  ///@}
+
+  /**
+   * The frame's local origin: a direction in the body's scaled space (x/a, y/b, z/c) and the
+   * body's radii (m). Its geodetic (lon, lat) is computed here in double; BindTextures() passes
+   * it as hi + lo (uniform vec4 globeGeodeticReference) with the direction (uniform vec3
+   * globeReferenceDirection); the passes turn the G-buffer's offsets from it into (lon, lat)
+   * with globe_geodeticFromOffset. Changes every frame and rebuilds nothing (no Modified()).
+   * vtkGlobeGridPass sets it to the camera's sub-point before it composes heights.
+   */
+  void SetGeodeticReference(const double direction[3], const double radii[3]);
+  /// The local origin's (lon, lat) in radians.
+  void GetGeodeticReference(double lonLat[2]);
+
   /// Bytes of GPU texture memory held.
   size_t GetTextureMemory();
 
@@ -106,6 +133,9 @@ protected:
   ~vtkGlobeLayerSet() override;
 
   int NumberOfUploads = 0;
+  bool HighPrecisionGeodetic = true;
+  double ReferenceDirection[3] = { 1.0, 0.0, 0.0 };
+  double ReferenceLonLat[2] = { 0.0, 0.0 };
 
 private:
   bool PrepareProjection(void* entry);

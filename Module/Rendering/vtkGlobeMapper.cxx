@@ -186,6 +186,20 @@ void vtkGlobeMapper::SetBaseColor(double r, double g, double b)
   this->Modified();
 }
 
+void vtkGlobeMapper::SetHighPrecisionGeodetic(bool on)
+{
+  if (this->Internals->Layers->GetHighPrecisionGeodetic() != on)
+  {
+    this->Internals->Layers->SetHighPrecisionGeodetic(on);
+    this->Modified();
+  }
+}
+
+bool vtkGlobeMapper::GetHighPrecisionGeodetic()
+{
+  return this->Internals->Layers->GetHighPrecisionGeodetic();
+}
+
 vtkGlobeProjectiveGrid* vtkGlobeMapper::GetProjectiveGrid()
 {
   return this->Internals->Grid;
@@ -596,8 +610,13 @@ bool vtkGlobeMapper::RenderGBuffer(vtkRenderer* ren, vtkActor* act, int width, i
     in.IndexResolution = n;
   }
 
-  static const std::string vertexShader = vtkGlobeShaderSources::Replace(
-    vtkGlobeRasterVS, "//GLOBE::Math", vtkGlobeShaderSources::Math());
+  const bool highPrecision = in.Layers->GetHighPrecisionGeodetic();
+  static const std::string vertexShaders[2] = {
+    vtkGlobeShaderSources::Replace(vtkGlobeRasterVS, "//GLOBE::Math", vtkGlobeShaderSources::Math()),
+    vtkGlobeShaderSources::Replace(vtkGlobeRasterVS, "//GLOBE::Math",
+      "#define GLOBE_HIGH_PRECISION_GEODETIC\n" + vtkGlobeShaderSources::Math())
+  };
+  const std::string& vertexShader = vertexShaders[highPrecision ? 1 : 0];
   // --- depth mode (vtkGlobeDepthPass): the G-buffer's depth is written in the scene's mode,
   // and the composite pass copies it as it is.
   vtkGlobeDepthPass* depthPass = vtkGlobeDepthPass::FindInProp(act);
@@ -685,6 +704,15 @@ bool vtkGlobeMapper::RenderGBuffer(vtkRenderer* ren, vtkActor* act, int width, i
   program->SetUniformMatrix4x4("globeEyeToClip", columnMajor);
   vtkGlobeShaderSources::SetRadii(program, in.Ellipsoid);
   program->SetUniformf("globeOneMinusRp", static_cast<float>(1.0 - in.Grid->GetPrimaryRadius()));
+  if (highPrecision)
+  {
+    const double* nadir = in.Grid->GetNadir();
+    const float nadirF[3] = { static_cast<float>(nadir[0]), static_cast<float>(nadir[1]),
+      static_cast<float>(nadir[2]) };
+    program->SetUniform3f("globeNadir", nadirF);
+    program->SetUniformf("globePrimaryAltitude", static_cast<float>(in.Grid->GetAltitude()));
+    program->SetUniformf("globePrimaryRadius", static_cast<float>(in.Grid->GetPrimaryRadius()));
+  }
   if (depthPass) // depth mode
   {
     depthPass->SetDepthUniforms(program);
@@ -775,6 +803,15 @@ void vtkGlobeMapper::ReduceMinimumRadius(
   state->PushFramebufferBindings();
   in.ReductionFramebuffer->Bind();
   vtkGlobeShaderSources::SetRadii(p, in.Ellipsoid);
+  {
+    // The G-buffer holds reference + direction: the sub-point with high-precision geodetic
+    // coordinates (it holds the offset), zero without (it holds the direction).
+    const double* nadir = in.Grid->GetNadir();
+    const bool offsets = in.Layers->GetHighPrecisionGeodetic();
+    const float reference[3] = { offsets ? -static_cast<float>(nadir[0]) : 0.0f,
+      offsets ? -static_cast<float>(nadir[1]) : 0.0f, offsets ? -static_cast<float>(nadir[2]) : 0.0f };
+    p->SetUniform3f("globeReferenceDirection", reference);
+  }
   for (size_t i = 0; i < sizes.size(); ++i)
   {
     vtkTextureObject* source = i == 0 ? in.GBuffer.Get() : in.ReductionLevels[i - 1].Get();
@@ -826,6 +863,7 @@ void vtkGlobeMapper::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "GridResolution: " << this->GetGridResolution() << "\n";
   os << indent << "Layers: " << in.Layers->GetNumberOfLayers() << "\n";
+  os << indent << "HighPrecisionGeodetic: " << this->GetHighPrecisionGeodetic() << "\n";
   os << indent << "PrimaryFromReduction: " << this->PrimaryFromReduction << "\n";
   os << indent << "LastVisibleMinimumHeight: " << this->LastVisibleMinimumHeight << "\n";
 }

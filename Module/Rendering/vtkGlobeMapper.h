@@ -17,8 +17,8 @@
  *     (vtkGlobeProjectiveGrid); the primary sphere is the lowest terrain seen in the previous
  *     frame (GPU min reduction), or the lowest data after a jump and on the first frame;
  *  2. vtkGlobeGridPass: PGM and height composition on a GridResolution^2 grid;
- *  3. rasterization of the grid as an eye-relative mesh into a G-buffer (direction, height,
- *     depth);
+ *  3. rasterization of the grid as an eye-relative mesh into a G-buffer (direction as an offset
+ *     from the frame's local origin, height, depth);
  *  4. vtkGlobeCompositePass: per-pixel composition of the colour layers and lighting, written
  *     with the G-buffer's depth into the renderer's framebuffer, so other actors and the globe
  *     occlude each other;
@@ -117,6 +117,21 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Geodetic precision (default on; Documentation/rendering.md, "Geodetic precision"): the
+   * G-buffer holds each pixel's direction as an offset from a per-frame local origin (the
+   * camera's sub-point, known in double), and the passes compose layers at (lon, lat) as hi + lo
+   * pairs from it, so 0.5 m data is placed as precisely at +-180 degrees longitude and 80
+   * degrees latitude as at (0, 0). Off: float (lon, lat) from a float unit direction (steps of
+   * up to 1.5 m near +-180 degrees, 0.4 m anywhere); the shaders are rebuilt when it changes.
+   */
+  void SetHighPrecisionGeodetic(bool on);
+  bool GetHighPrecisionGeodetic();
+  void HighPrecisionGeodeticOn() { this->SetHighPrecisionGeodetic(true); }
+  void HighPrecisionGeodeticOff() { this->SetHighPrecisionGeodetic(false); }
+  ///@}
+
+  ///@{
   /// The parts of a frame, for inspection, tests and benchmarks.
   vtkGlobeProjectiveGrid* GetProjectiveGrid();
   vtkGlobeGridPass* GetGridPass();
@@ -124,7 +139,8 @@ public:
   ///@}
 
   ///@{
-  /// The last frame's G-buffer (window-sized: direction + height, and its depth), for tests
+  /// The last frame's G-buffer (window-sized: direction, or its offset from the local origin
+  /// with HighPrecisionGeodetic, + height; and its depth), for tests
   /// that read every texel back (hard cases: no NaN anywhere); nullptr before the first frame.
   vtkTextureObject* GetGBufferTexture();
   vtkTextureObject* GetGBufferDepthTexture();

@@ -38,6 +38,9 @@ list(APPEND globe_rendering_tests
 list(APPEND globe_rendering_tests
   TestGlobeJitter.cxx
   TestGlobeSatelliteLimb.cxx)
+# Geodetic precision (issue 5): 0.5 m data at +-180 degrees and +-80 degrees as at (0, 0).
+list(APPEND globe_rendering_tests
+  TestGlobeGeodeticPrecision.cxx)
 
 create_test_sourcelist(_globe_rendering_driver_sources GlobeRenderingCxxTests.cxx
   ${globe_rendering_tests}

@@ -107,10 +107,12 @@ int TestGlobeEverestSummit(int, char*[])
     scene.Render();
 
     // The margin: what the drawn terrain may differ from the data near the cube, the same in
-    // both modes (not depth): the GPU samples heights at float (lon, lat), 2 ulps of 1.5 rad
-    // are 1.5 m on the ground, times the local slope (CheckTerrain's sampling term); plus a few
-    // cm of mesh chord; farther, 0.2 % of the distance covers the chords.
-    double slope = 0.0;
+    // both modes (not depth): the GPU samples heights at (lon, lat) from the frame's local
+    // origin (HighPrecisionGeodetic: within 0.1 mm + 3e-7 of the distance, TestGlobeGeodetic-
+    // Precision; with float (lon, lat) it was 2 ulps of 1.5 rad, 1.14 m, 0.43 m here) with
+    // 8-bit bilinear weights (1/256 of a 90 m post), both times the local slope; plus a few cm
+    // of mesh chord; farther, 0.2 % of the distance covers the chords.
+    double slope = 0.0, texel = 0.0;
     {
       double llh[3];
       body->CartesianToGeodetic(centre, llh);
@@ -120,9 +122,11 @@ int TestGlobeEverestSummit(int, char*[])
       const double gy = (vtkGlobeTest::ComposedHeight(layers, llh[0], llh[1] + dDeg) -
         vtkGlobeTest::ComposedHeight(layers, llh[0], llh[1] - dDeg)) / 20.0;
       slope = std::sqrt(gx * gx + gy * gy);
+      texel = vtkGlobeTest::FinestTexel(layers, llh[0], llh[1], body->GetMinimumRadius());
     }
-    const double sampling = slope * 2.0 * 1.5 / 16777216.0 * 6378137.0;
-    std::printf("  slope at the cube %.2f: float (lon, lat) sampling margin %.2f m\n", slope, sampling);
+    const double sampling = slope * (1e-3 + texel / 256.0);
+    std::printf("  slope at the cube %.2f, posts %.0f m: sampling margin %.2f m (geodetic %.4f m)\n",
+      slope, texel, sampling, slope * 1e-3);
     const vtkGlobeTest::SurfaceCount count = vtkGlobeTest::CountWrongSurface(
       scene,
       [&](const double* e, const double* r) { return vtkGlobeTest::RayBoxHit(centre, axes, 0.5, e, r); },

@@ -74,6 +74,76 @@ void globe_lonLatFromNormal(vec3 n, GLOBE_OUT(float) lon, GLOBE_OUT(float) lat)
   lat = globe_atan2(n.z, sqrt(n.x * n.x + n.y * n.y));
 }
 
+// atan2(y, x) with full relative accuracy for angles up to 14 degrees (|y| <= x / 4: odd Taylor
+// series, relative error < 2e-11), globe_atan2 beyond. The offsets from a local origin are such
+// angles, and globe_atan2's polynomial is accurate only to 2e-8 rad absolutely (13 cm on the
+// Earth).
+float globe_atan2Offset(float y, float x)
+{
+  if (x > 0.0f && abs(y) <= 0.25f * x)
+  {
+    float t = y / x;
+    float t2 = t * t;
+    return t * (1.0f - t2 * (0.33333333333333333f - t2 * (0.2f - t2 * (0.14285714285714286f -
+      t2 * (0.11111111111111111f - t2 * (0.09090909090909091f - t2 * (0.07692307692307693f -
+      t2 * 0.06666666666666667f)))))));
+  }
+  return globe_atan2(y, x);
+}
+
+// float(2 pi) and the rest, and the grid of the hi parts below (2^-12 rad).
+const float GLOBE_TWO_PI_HI = 6.2831854820251465f;
+const float GLOBE_TWO_PI_LO = -1.7484555314695172e-07f;
+const float GLOBE_HI_GRID = 4096.0f;
+
+// A value given as base (hi + lo) + delta, as a hi + lo pair whose hi is the value rounded to a
+// multiple of 2^-12 and whose lo is the small rest. Both hi - base.hi and, for any other number
+// that is a multiple of 2^-12 (a layer's edge), hi - that number are exact in float, so the
+// pair can be differenced without cancellation; and hi is the value to 1.2e-4, which is what
+// range checks (a projection's domain, the wrap of longitudes) need. `turn` (0, +-1) adds
+// whole turns of 2 pi, in hi + lo.
+void globe_splitOnGrid(float baseHi, float baseLo, float delta, float turn, GLOBE_OUT(float) hi,
+  GLOBE_OUT(float) lo)
+{
+  hi = floor((baseHi + delta + turn * GLOBE_TWO_PI_HI) * GLOBE_HI_GRID + 0.5f) / GLOBE_HI_GRID;
+  lo = ((baseHi + turn * GLOBE_TWO_PI_HI) - hi) + ((baseLo + turn * GLOBE_TWO_PI_LO) + delta);
+}
+
+// Geodetic longitude and latitude, each as a hi + lo pair (globe_splitOnGrid: hi on a 2^-12 rad
+// grid, the longitude's in [-pi, pi]), of the point in direction reference + offset (body
+// scaled space), from a local origin: `reference` is a direction whose (lon, lat) the CPU
+// computed in double and passes as hi + lo (referenceLonLat: lon hi, lon lo, lat hi, lat lo),
+// `offset` the (small) difference of the point's direction from it. Only products of the
+// offset are formed, never a difference of two numbers near 1 or pi, so the pairs are as
+// precise as the offset (a float longitude near +-pi is 1.5 m on the Earth; a float unit
+// direction 0.4 m). A reference on the polar axis has no longitude: there the point's own
+// longitude is taken (within 6 m of the axis a float longitude is 1.5 mm per km from it).
+void globe_geodeticFromOffset(vec3 reference, vec4 referenceLonLat, vec3 offset,
+  vec3 radiiScaled, GLOBE_OUT(float) lonHi, GLOBE_OUT(float) lonLo, GLOBE_OUT(float) latHi,
+  GLOBE_OUT(float) latLo)
+{
+  // Geodetic normals point along direction / radii: only angles of these are needed.
+  vec3 q0 = reference / radiiScaled;
+  vec3 dq = offset / radiiScaled;
+  vec3 q = q0 + dq;
+  float rho02 = q0.x * q0.x + q0.y * q0.y;
+  float rho0 = sqrt(rho02);
+  float rho = sqrt(q.x * q.x + q.y * q.y);
+  // rho - rho0 and the angles between (rho0, q0.z) and (rho, q.z), and between q0.xy and q.xy,
+  // as atan2(cross, dot) with the cross products in the offset only.
+  float dRho = (dq.x * (2.0f * q0.x + dq.x) + dq.y * (2.0f * q0.y + dq.y)) / max(rho + rho0, 1e-30f);
+  float dLat = globe_atan2Offset(rho0 * dq.z - q0.z * dRho, rho0 * rho + q0.z * q.z);
+  globe_splitOnGrid(referenceLonLat.z, referenceLonLat.w, dLat, 0.0f, latHi, latLo);
+  bool polar = !(rho02 > 1e-12f);
+  float baseHi = polar ? 0.0f : referenceLonLat.x;
+  float baseLo = polar ? 0.0f : referenceLonLat.y;
+  float dLon = polar ? globe_atan2(q.y, q.x)
+                     : globe_atan2Offset(q0.x * dq.y - q0.y * dq.x, q0.x * q.x + q0.y * q.y);
+  float rough = baseHi + dLon;
+  float turn = rough > 3.14159265f ? -1.0f : (rough < -3.14159265f ? 1.0f : 0.0f);
+  globe_splitOnGrid(baseHi, baseLo, dLon, turn, lonHi, lonLo);
+}
+
 // Unit normal of the ellipsoid at a point on (or near) its surface: normalize(p / radii^2).
 vec3 globe_geodeticSurfaceNormal(vec3 p, vec3 radii)
 {

@@ -1,7 +1,7 @@
 //VTK::System::Dec
 //VTK::Output::Dec
-// Screen composition (deferred texturing): per pixel, the G-buffer's direction gives the
-// geodetic (lon, lat); the layers are composed there at the window's resolution; terrain
+// Screen composition (deferred texturing): per pixel, the G-buffer's direction (or its offset
+// from the frame's local origin) gives the geodetic (lon, lat); the layers are composed there at the window's resolution; terrain
 // normals come from the composed height gradient; then the enabled effects. The //GLOBE::
 // markers are replaced by vtkGlobeCompositePass with the code of the enabled effects only
 // (or nothing). Writes colour and the G-buffer's depth into the renderer's framebuffer, with
@@ -30,19 +30,37 @@ void main()
 {
   float depth = texture(globeDepth, texCoord).r;
   vec4 g = texture(globeGBuffer, texCoord);
+  // (lon, lat) as hi + lo pairs for the layers; lon and lat (one float each) for the effects.
+  float lonHi;
+  float lonLo;
+  float latHi;
+  float latLo;
+#ifdef GLOBE_HIGH_PRECISION_GEODETIC
+  // The G-buffer holds the direction's offset from the frame's local origin.
+  bool covered = depth < 1.0;
+  vec3 offset = covered ? g.xyz : vec3(0.0);
+  vec3 s = globe_normalize(globeReferenceDirection + offset);
+  vec3 n = globe_normalize(s / globeRadiiScaled);
+  globe_geodeticFromOffset(globeReferenceDirection, globeGeodeticReference, offset,
+    globeRadiiScaled, lonHi, lonLo, latHi, latLo);
+  float lon = lonHi + lonLo;
+#else
   bool covered = depth < 1.0 && dot(g.xyz, g.xyz) > 0.25;
   vec3 s = covered ? globe_normalize(g.xyz) : vec3(0.0, 0.0, 1.0);
   vec3 n = globe_normalize(s / globeRadiiScaled);
-  float lon;
-  float lat;
-  globe_lonLatFromNormal(n, lon, lat);
+  globe_lonLatFromNormal(n, lonHi, latHi);
+  lonLo = 0.0;
+  latLo = 0.0;
+  float lon = lonHi;
+#endif
+  float lat = latHi + latLo;
   vec4 far = globeClipToEye * vec4(2.0 * texCoord - 1.0, 1.0, 1.0);
   vec3 ray = globe_normalize(far.xyz / far.w);
 
   // Everything that takes screen derivatives runs before any discard, so every 2x2 quad
   // has them.
   vec2 gradient;
-  float h = globe_composeHeight(lon, lat, gradient);
+  float h = globe_composeHeight(lonHi, lonLo, latHi, latLo, gradient);
   vec3 albedo = globeBaseColor;
   float lines = 0.0;
   vec3 lineColor = vec3(0.0);

@@ -1,6 +1,7 @@
 //VTK::System::Dec
 //VTK::Output::Dec
-// Rasterization: writes the G-buffer (direction and height per pixel) and depth. Directions are
+// Rasterization: writes the G-buffer (direction, or with high-precision geodetic coordinates its
+// offset from the frame's local origin, and height per pixel) and depth. Directions are
 // interpolated, never longitudes (no 0/360 degree seam).
 in vec4 globeDirectionHeight;
 in float globeValid;

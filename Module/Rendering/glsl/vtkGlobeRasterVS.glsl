@@ -12,6 +12,9 @@ uniform mat4 globeEyeToClip;
 uniform vec3 globeRadii;
 uniform vec3 globeRadiiScaled;
 uniform float globeOneMinusRp;
+uniform vec3 globeNadir;
+uniform float globePrimaryAltitude;
+uniform float globePrimaryRadius;
 
 out vec4 globeDirectionHeight;
 out float globeValid;
@@ -27,6 +30,12 @@ void main()
   // is the primary-sphere point p plus (1 - r_p) along the direction, in metres.
   vec3 eyeRelative = (p + globeOneMinusRp * d.xyz) * globeRadii + h * n;
   gl_Position = globeEyeToClip * vec4(eyeRelative, 1.0);
+#ifdef GLOBE_HIGH_PRECISION_GEODETIC
+  // The G-buffer holds the direction's offset from the sub-point (the local origin), as the
+  // height pass computes it: precise where a float unit direction is 0.4 m on the Earth.
+  globeDirectionHeight = vec4((p - globePrimaryAltitude * globeNadir) / globePrimaryRadius, h);
+#else
   globeDirectionHeight = vec4(d.xyz, h);
+#endif
   globeValid = d.w;
 }

@@ -13,6 +13,9 @@ uniform int globeFirstLevel;
 uniform vec3 globeRadiiScaled;
 uniform vec3 globeRadii;
 uniform vec2 globeOutputSize;
+// Added to the G-buffer's xyz to give the direction: the local origin when it holds offsets
+// from it (high-precision geodetic coordinates), zero when it holds the direction.
+uniform vec3 globeReferenceDirection;
 
 void main()
 {
@@ -32,7 +35,7 @@ void main()
           continue;
         }
         // rho = |s + h n / radii|; rho - 1 without cancellation (|s| = 1).
-        vec3 s = globe_normalize(v.xyz);
+        vec3 s = globe_normalize(globeReferenceDirection + v.xyz);
         vec3 q = v.w * globe_normalize(s / globeRadiiScaled) / globeRadii;
         float rho = globe_length(s + q);
         m = min(m, (2.0 * dot(s, q) + dot(q, q)) / (rho + 1.0));
