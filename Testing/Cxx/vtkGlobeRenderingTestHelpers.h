@@ -691,6 +691,36 @@ inline std::vector<std::array<double, 3>> GeodeticPixels(Scene& scene)
   return llh;
 }
 
+/// The world point (double) a texel of the G-buffer names, for the frame just rendered
+/// (Documentation/rendering.md "Geodetic precision"). With HighPrecisionGeodetic (the default)
+/// the texel holds the scaled-space direction's offset from the frame's local origin, the
+/// sub-point -nadir (in double on the CPU); off, the float direction itself. The point is the
+/// ellipsoid's along that direction, raised by the texel's height (w) along the geodetic normal
+/// when `withHeight`.
+inline void GBufferPoint(Scene& scene, const float texel[4], bool withHeight, double point[3])
+{
+  const double* nadir = scene.Mapper->GetProjectiveGrid()->GetNadir();
+  const bool offsets = scene.Mapper->GetHighPrecisionGeodetic();
+  const double* radii = scene.Body->GetRadii();
+  double s[3], n = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    s[k] = (offsets ? -nadir[k] : 0.0) + static_cast<double>(texel[k]);
+    n += s[k] * s[k];
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    point[k] = s[k] / std::sqrt(n) * radii[k];
+  }
+  if (withHeight)
+  {
+    double llh[3];
+    scene.Body->CartesianToGeodeticQuiet(point, llh);
+    llh[2] = texel[3];
+    scene.Body->GeodeticToCartesianQuiet(llh, point);
+  }
+}
+
 /// Counts pixels whose depth is not the background's.
 inline int CoveredPixels(const std::vector<float>& depth)
 {
