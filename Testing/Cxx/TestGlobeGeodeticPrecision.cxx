@@ -212,9 +212,6 @@ void MeasureChecker(vtkGlobeTest::Scene& scene, const Place& place, Measure& m)
   const int* size = scene.Window->GetSize();
   const std::vector<unsigned char> pixels = vtkGlobeTest::ReadPixels(scene.Window);
   const std::vector<float> gbuffer = vtkGlobeTest::ReadTexture(scene.Mapper->GetGBufferTexture());
-  const double* nadir = scene.Mapper->GetProjectiveGrid()->GetNadir();
-  const bool offsets = scene.Mapper->GetHighPrecisionGeodetic();
-  const double* radii = body->GetRadii();
   const double* eye = scene.Renderer->GetActiveCamera()->GetPosition();
   std::vector<double> gErrors;
   for (int y = 0; y < size[1]; ++y)
@@ -230,17 +227,8 @@ void MeasureChecker(vtkGlobeTest::Scene& scene, const Place& place, Measure& m)
       }
       // The G-buffer's point: its direction (reference + offset, or the direction) on the
       // ellipsoid, against the exact hit.
-      double s[3], n = 0;
-      for (int k = 0; k < 3; ++k)
-      {
-        s[k] = (offsets ? -nadir[k] : 0.0) + static_cast<double>(gbuffer[4 * at + k]);
-        n += s[k] * s[k];
-      }
       double g[3];
-      for (int k = 0; k < 3; ++k)
-      {
-        g[k] = s[k] / std::sqrt(n) * radii[k];
-      }
+      vtkGlobeTest::GBufferPoint(scene, &gbuffer[4 * at], false, g);
       gErrors.push_back(vtkGlobeTest::Distance(g, hit));
 
       const double fx = std::remainder(llh[0] - west, 360.0) / cellLon;

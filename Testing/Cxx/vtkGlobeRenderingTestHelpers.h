@@ -306,6 +306,43 @@ inline double FinestTexel(const std::vector<vtkGlobeLayer*>& layers, double lon,
   return best;
 }
 
+/// Where float texture coordinates put a sample (m), worst over the height layers covering
+/// (lon, lat): u and v are differences from the layer's west and north edges, divided by its
+/// span and scaled to texels by the GPU, three roundings of 2^-24 relative each, so 3 * 2^-24
+/// of the distance from those edges (with exact (lon, lat): 7 m across a global layer, far
+/// below its 8-bit filter weights' texel / 256; sub-millimetre for a small inset).
+inline double UVRounding(const std::vector<vtkGlobeLayer*>& layers, double lon, double lat, double radius)
+{
+  double worst = 0.0;
+  for (vtkGlobeLayer* layer : layers)
+  {
+    double value, u, v;
+    if (layer->GetRole() != vtkGlobeLayer::Height || !layer->IsValid() ||
+      !SampleHeight(layer, lon, lat, value) || !LayerUV(layer, lon, lat, u, v))
+    {
+      continue;
+    }
+    double spanU, spanV; // m
+    if (layer->GetModelType() == vtkGlobeLayer::Projected)
+    {
+      double origin[2], pixel[2];
+      layer->GetProjectedGeoTransform(origin, pixel);
+      spanU = std::abs(pixel[0]) * layer->GetWidth();
+      spanV = std::abs(pixel[1]) * layer->GetHeight();
+    }
+    else
+    {
+      double e[4];
+      layer->GetGeographicExtent(e);
+      const double perDegree = radius * 3.14159265358979 / 180.0;
+      spanU = (e[1] - e[0]) * perDegree * std::cos(lat * 3.14159265358979 / 180.0);
+      spanV = (e[3] - e[2]) * perDegree;
+    }
+    worst = std::max(worst, 3.0 / 16777216.0 * (std::abs(u) * spanU + std::abs(v) * spanV));
+  }
+  return worst;
+}
+
 /// The weight of a layer's coverage at (lon, lat) in degrees (0 outside), with its feathered
 /// border, as the generated GLSL computes it, before opacity and data validity.
 inline double CoverageWeight(vtkGlobeLayer* layer, double lon, double lat)
@@ -443,6 +480,7 @@ struct TerrainCheck
   int Failures = 0;        // beyond their bound
   int NaNs = 0;            // NaN depth or position
   double WorstRatio = 0.0; // worst |dh| / bound
+  double WorstRatioFloat = 0.0; // the same with float (lon, lat)'s sampling term (comparison)
   double MedianError = 0.0;
   double WorstError = 0.0;
   std::string Where;
@@ -560,6 +598,18 @@ inline TerrainCheck CheckTerrain(Scene& scene, int stride, vtkGlobeDepthPass* de
   double view[3];
   camera->GetDirectionOfProjection(view);
   const double radius = scene.Body->GetMinimumRadius();
+  // The frame's local origin for geodetic coordinates: the surface point under the camera.
+  const bool highPrecision = scene.Mapper->GetHighPrecisionGeodetic();
+  const double largest = scene.Body->GetMaximumRadius();
+  double subPoint[3];
+  {
+    const double* nadir = scene.Mapper->GetProjectiveGrid()->GetNadir();
+    const double* radii = scene.Body->GetRadii();
+    for (int k = 0; k < 3; ++k)
+    {
+      subPoint[k] = -nadir[k] * radii[k];
+    }
+  }
   std::vector<double> errors;
   for (int y = stride / 2; y < size[1]; y += stride)
   {
@@ -621,16 +671,33 @@ inline TerrainCheck CheckTerrain(Scene& scene, int stride, vtkGlobeDepthPass* de
           curvature = std::max(curvature, 0.5 * (hi - lo));
         }
       }
-      // How the GPU samples the data: float geodetic coordinates (~1 m on a planet), 8-bit
-      // bilinear weights (slope * texel / 256), and, where the grid is coarser than the texels,
-      // a mipmap level whose box filter is off-centre by up to half the grid spacing.
+      // How the GPU samples the data: where it samples (float (lon, lat), ~1 m on a planet, or
+      // with HighPrecisionGeodetic the hi + lo conversion from the frame's local origin, within
+      // 0.1 mm + 3e-7 of the distance from it (TestGlobeGeodeticPrecision A), and the layers'
+      // float texture coordinates), 8-bit bilinear weights (slope * texel / 256), and, where the
+      // grid is coarser than the texels, a mipmap level whose box filter is off-centre by up to
+      // half the grid spacing.
       const double texel = FinestTexel(layers, llh[0], llh[1], radius);
-      const double sampling = slope * (radius * 2.0 / 16777216.0 * 8.0 + std::min(texel, 1e7) / 256.0 +
-                                        (spacing > texel && spacing < 1e29 ? 0.5 * spacing : 0.0));
+      double where = radius * 2.0 / 16777216.0 * 8.0;
+      if (highPrecision)
+      {
+        double surface[3];
+        const double onEllipsoid[3] = { llh[0], llh[1], 0.0 };
+        scene.Body->GeodeticToCartesianQuiet(onEllipsoid, surface);
+        const double chord = std::sqrt((surface[0] - subPoint[0]) * (surface[0] - subPoint[0]) +
+          (surface[1] - subPoint[1]) * (surface[1] - subPoint[1]) +
+          (surface[2] - subPoint[2]) * (surface[2] - subPoint[2]));
+        const double arc = 2.0 * largest * std::asin(std::min(1.0, chord / (2.0 * largest)));
+        where = 1e-4 + 3e-7 * arc + UVRounding(layers, llh[0], llh[1], radius);
+      }
+      const double filter = std::min(texel, 1e7) / 256.0 + (spacing > texel && spacing < 1e29 ? 0.5 * spacing : 0.0);
+      const double sampling = slope * (where + filter);
+      const double floatSampling = slope * (radius * 2.0 / 16777216.0 * 8.0 + filter);
       const bool logDepth = depthPass && depthPass->GetMode() == vtkGlobeDepthPass::Logarithmic;
       const double bound = (logDepth ? LogDepthBound(depthPass, z) : DepthBound(camera, z)) * (1.0 + slope) + 2.0 * curvature + sampling +
         (spacing < 1e29 ? spacing * spacing / (6.0 * radius) : 0.0) + 1e-3;
       const double error = std::abs(llh[2] - h);
+      result.WorstRatioFloat = std::max(result.WorstRatioFloat, error / (bound - sampling + floatSampling));
       errors.push_back(error);
       ++result.Pixels;
       const double ratio = error / bound;
@@ -661,9 +728,9 @@ inline TerrainCheck CheckTerrain(Scene& scene, int stride, vtkGlobeDepthPass* de
     std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
     result.MedianError = errors[errors.size() / 2];
   }
-  std::printf("  terrain check: %d pixels, median |dh| %.2f m, worst %.1f m, worst/bound %.3f, "
-              "%d beyond bound, %d NaN\n    worst at %s\n",
-    result.Pixels, result.MedianError, result.WorstError, result.WorstRatio, result.Failures,
+  std::printf("  terrain check: %d pixels, median |dh| %.2f m, worst %.1f m, worst/bound %.3f "
+              "(%.3f with float (lon, lat)'s sampling term), %d beyond bound, %d NaN\n    worst at %s\n",
+    result.Pixels, result.MedianError, result.WorstError, result.WorstRatio, result.WorstRatioFloat, result.Failures,
     result.NaNs, result.Where.c_str());
   return result;
 }
@@ -689,6 +756,36 @@ inline std::vector<std::array<double, 3>> GeodeticPixels(Scene& scene)
     }
   }
   return llh;
+}
+
+/// The world point (double) a texel of the G-buffer names, for the frame just rendered
+/// (Documentation/rendering.md "Geodetic precision"). With HighPrecisionGeodetic (the default)
+/// the texel holds the scaled-space direction's offset from the frame's local origin, the
+/// sub-point -nadir (in double on the CPU); off, the float direction itself. The point is the
+/// ellipsoid's along that direction, raised by the texel's height (w) along the geodetic normal
+/// when `withHeight`.
+inline void GBufferPoint(Scene& scene, const float texel[4], bool withHeight, double point[3])
+{
+  const double* nadir = scene.Mapper->GetProjectiveGrid()->GetNadir();
+  const bool offsets = scene.Mapper->GetHighPrecisionGeodetic();
+  const double* radii = scene.Body->GetRadii();
+  double s[3], n = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    s[k] = (offsets ? -nadir[k] : 0.0) + static_cast<double>(texel[k]);
+    n += s[k] * s[k];
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    point[k] = s[k] / std::sqrt(n) * radii[k];
+  }
+  if (withHeight)
+  {
+    double llh[3];
+    scene.Body->CartesianToGeodeticQuiet(point, llh);
+    llh[2] = texel[3];
+    scene.Body->GeodeticToCartesianQuiet(llh, point);
+  }
 }
 
 /// Counts pixels whose depth is not the background's.
