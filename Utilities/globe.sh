@@ -5,6 +5,7 @@
 #   Utilities/globe.sh demo [args]    build, then render the Earth (PNGs, or a window)
 #   Utilities/globe.sh test [args]    build, then run the whole test suite (ctest args pass on)
 #   Utilities/globe.sh bench [args]   build, then run the benchmark (table + build/benchmark.json)
+#                                     and plot it (Documentation/accuracy-vs-time.md, images/)
 #   Utilities/globe.sh build          install packages and build only
 #   Utilities/globe.sh python script.py [args]   build, then run a Python script with the
 #                                     build's vtkglobe package, under Xvfb when there is no display
@@ -89,8 +90,23 @@ case "$command" in
   bench)
     install_packages
     build_project
+    # From scratch: the JSON, then the plots, the Pareto fronts and the report's tables from it.
+    # A --quick (smoke) run leaves the report alone and puts its plots in the build tree.
+    images="$root/Documentation/images"
+    report=(--markdown "$root/Documentation/accuracy-vs-time.md")
+    for arg in "$@"; do
+      if [ "$arg" = "--quick" ]; then
+        images="$build/benchmark-images"
+        report=()
+      fi
+    done
+    rm -f "$build/benchmark.json" "$images"/accuracy-vs-time-*.png
     echo "== running the benchmark (a program, not a test)"
     with_display "$build/bin/GlobeBenchmark" --json "$build/benchmark.json" "$@"
+    echo "== plotting"
+    with_display env PYTHONPATH="$build/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}" \
+      /usr/bin/python3 "$root/Utilities/plot_benchmark.py" "$build/benchmark.json" \
+      --images "$images" "${report[@]}"
     ;;
   build)
     install_packages

@@ -1,0 +1,331 @@
+#!/usr/bin/env python3
+"""Plots GlobeBenchmark's JSON: error against frame time per scene, and the Pareto fronts.
+
+    plot_benchmark.py BENCHMARK_JSON [--images DIR] [--markdown FILE] [--no-images]
+
+Imports only VTK and the standard library. For each scene it writes
+DIR/accuracy-vs-time-<scene>.png (default DIR: Documentation/images): frame time (median, ms)
+against the terrain's on-screen error (p95 px, missing and extra terrain counted as infinitely
+wrong), log axes, one point set per family of settings, VTK's naive globes as their own points,
+the Pareto front as a line. Settings that fail (more than 5 % of the samples uncovered, or
+wrong-surface pixels in the satellite scene) are drawn on a "fails" row at the top.
+
+The Pareto front (no other configuration is both faster and more accurate) is printed, added to
+the JSON under "pareto", and, with --markdown, the report's generated tables are replaced
+between the markers <!-- BEGIN GENERATED --> and <!-- END GENERATED -->.
+"""
+
+import argparse
+import json
+import math
+import os
+import sys
+
+FAMILY_ORDER = ["baseline", "grid", "grid-window", "depth", "precision", "composition", "effects"]
+# RGB, marker style (vtkPlotPoints: 1 cross, 2 plus, 3 square, 4 circle, 5 diamond)
+STYLE = {
+    "baseline": ((0, 0, 0), 5),
+    "grid": ((31, 119, 180), 4),
+    "grid-window": ((44, 160, 44), 3),
+    "depth": ((214, 39, 40), 1),
+    "precision": ((148, 103, 189), 2),
+    "composition": ((255, 127, 14), 5),
+    "effects": ((140, 86, 75), 2),
+    "naive sphere": ((127, 127, 127), 3),
+    "naive mesh": ((188, 189, 34), 4),
+    "fails": ((214, 39, 40), 1),
+}
+
+
+def label(row):
+    if row["family"] == "naive":
+        return "naive " + row["method"]
+    return row["family"]
+
+
+def error_of(row):
+    """The plotted error (p95 px), or None where the configuration fails."""
+    ws = row.get("wrong_surface")
+    if ws and ws.get("wrong", 0) > 0:
+        return None
+    return row["terrain"].get("p95_all_px")
+
+
+# Families whose settings change what the image shows (colour filtering, feathered borders,
+# effects) rather than how accurately the same surface is drawn: plotted and tabulated, but not
+# candidates for the accuracy/time front. The repeated baseline only measures drift.
+NOT_CANDIDATES = ("composition", "effects")
+
+
+def candidate(row):
+    return row["family"] not in NOT_CANDIDATES and "repeated" not in row["setting"]
+
+
+def pareto(rows):
+    """Candidate rows no other candidate beats on both frame time and error."""
+    ok = [r for r in rows if candidate(r) and error_of(r) is not None
+          and r["frame_ms"]["median"] is not None]
+    ok.sort(key=lambda r: (r["frame_ms"]["median"], error_of(r)))
+    front, best = [], math.inf
+    for r in ok:
+        e = error_of(r)
+        if e < best:
+            front.append(r)
+            best = e
+    return front
+
+
+def name(row):
+    if row["family"] == "naive":
+        return row["setting"]
+    if row["family"] == "baseline":
+        return "PGM " + row["setting"]
+    return "PGM %s: %s" % (row["family"], row["setting"])
+
+
+def plot_scene(scene, rows, front, path):
+    # VTK is imported here so --no-images works without a display.
+    from vtkmodules.vtkChartsCore import vtkAxis, vtkChart, vtkChartXY, vtkPlotPoints
+    from vtkmodules.vtkCommonCore import vtkFloatArray
+    from vtkmodules.vtkCommonDataModel import vtkTable
+    from vtkmodules.vtkIOImage import vtkPNGWriter
+    from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
+    from vtkmodules.vtkViewsContext2D import vtkContextView
+    import vtkmodules.vtkRenderingContextOpenGL2  # noqa: F401 (the chart's OpenGL backend)
+    import vtkmodules.vtkRenderingFreeType  # noqa: F401 (text)
+    import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+
+    errors = [error_of(r) for r in rows if error_of(r) is not None]
+    positive = [e for e in errors if e > 0]
+    floor = min(positive) / 2 if positive else 1e-3
+    top = max(positive) if positive else 1.0
+    fails_y = top * 4
+
+    groups = {}
+    for r in rows:
+        key = label(r)
+        if error_of(r) is None:
+            key = "fails"
+        groups.setdefault(key, []).append(r)
+    # Families' curves include the baseline (it is their default value).
+    baseline = [r for r in rows if r["family"] == "baseline"]
+
+    view = vtkContextView()
+    view.GetRenderer().SetBackground(1, 1, 1)
+    view.GetRenderWindow().SetSize(900, 560)
+    view.GetRenderWindow().SetOffScreenRendering(1)
+    chart = vtkChartXY()
+    view.GetScene().AddItem(chart)
+    chart.SetShowLegend(True)
+    # Bottom left: fast and accurate at once is where nothing is.
+    chart.GetLegend().SetHorizontalAlignment(chart.GetLegend().LEFT)
+    chart.GetLegend().SetVerticalAlignment(chart.GetLegend().BOTTOM)
+    chart.SetTitle("%s: terrain error against frame time" % scene["name"])
+
+    def add_series(title, points, rgb, marker, line=False):
+        table = vtkTable()
+        x = vtkFloatArray()
+        x.SetName("frame ms")
+        y = vtkFloatArray()
+        y.SetName(title)
+        table.AddColumn(x)
+        table.AddColumn(y)
+        table.SetNumberOfRows(len(points))
+        for i, (px, py) in enumerate(points):
+            table.SetValue(i, 0, px)
+            table.SetValue(i, 1, py)
+        plot = chart.AddPlot(vtkChart.LINE if line else vtkChart.POINTS)
+        plot.SetInputData(table, 0, 1)
+        plot.SetColor(rgb[0], rgb[1], rgb[2], 255)
+        if line:
+            plot.SetWidth(1.5)
+        else:
+            plot.SetMarkerStyle(marker)
+            plot.SetMarkerSize(10)
+
+    for key in FAMILY_ORDER + ["naive sphere", "naive mesh", "fails"]:
+        members = groups.get(key)
+        if not members:
+            continue
+        if key not in ("baseline", "fails") and not key.startswith("naive"):
+            members = members + baseline
+        pts = []
+        for r in members:
+            e = error_of(r)
+            pts.append((r["frame_ms"]["median"], fails_y if e is None else max(e, floor)))
+        pts.sort()
+        rgb, marker = STYLE.get(key, ((0, 0, 0), 4))
+        add_series(key if key != "fails" else "fails (uncovered > 5 % or wrong surface)", pts, rgb,
+                   marker)
+    if front:
+        add_series("Pareto front",
+                   [(r["frame_ms"]["median"], max(error_of(r), floor)) for r in front],
+                   (0, 0, 0), 0, line=True)
+
+    bottom = chart.GetAxis(vtkAxis.BOTTOM)
+    bottom.SetTitle("frame time, median (ms)")
+    bottom.SetLogScale(True)
+    left = chart.GetAxis(vtkAxis.LEFT)
+    left.SetTitle("terrain error p95 (px)")
+    left.SetLogScale(True)
+    times = [r["frame_ms"]["median"] for r in rows if r["frame_ms"]["median"]]
+    bottom.SetBehavior(vtkAxis.FIXED)
+    bottom.SetRange(min(times) / 1.5, max(times) * 1.5)
+    left.SetBehavior(vtkAxis.FIXED)
+    left.SetRange(floor / 1.5, fails_y * 2)
+
+    view.GetRenderWindow().Render()
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(view.GetRenderWindow())
+    grab.Update()
+    writer = vtkPNGWriter()
+    writer.SetFileName(path)
+    writer.SetInputConnection(grab.GetOutputPort())
+    writer.Write()
+
+
+def fmt(v, f="%.2f"):
+    return "–" if v is None else f % v
+
+
+def q(d, key="p95", f="%.2f"):
+    return "–" if not d or d.get(key) is None else f % d[key]
+
+
+def markdown(data, fronts):
+    m = data["machine"]
+    s = data["settings"]
+    out = []
+    out.append("Run of %s%s: %s; %s; %s, %s CPU threads; load average %s at the start, %s at the "
+               "end; %s. Window %dx%d, %d timed frames per configuration after %d warm-up "
+               "(fewer for very slow ones, listed below); total %.0f s." % (
+                   data["date"], " (QUICK: smoke run, not for quoting)" if s["quick"] else "",
+                   m["gl_renderer"], m["gl_version"], m["cpu"], m["cpu_threads"],
+                   m.get("loadavg_start", "?"), m.get("loadavg_end", "?"),
+                   data.get("conditions") or "conditions not recorded", s["window"][0],
+                   s["window"][1], s["frames"], s["warmup"], data["total_seconds"]))
+    out.append("")
+    for scene in data["scenes"]:
+        rows = [r for r in data["rows"] if r["scene"] == scene["name"]]
+        front_ids = {id(r) for r in fronts.get(scene["name"], [])}
+        out.append("#### %s — %s" % (scene["name"], scene["description"]))
+        out.append("")
+        out.append("%d sample pixels (every %d px); clipping: policy [%.3g, %.3g] m, VTK's own "
+                   "[%.3g, %.3g] m." % (scene["samples"], scene["sample_stride"],
+                                          scene["clipping_policy_m"][0],
+                                          scene["clipping_policy_m"][1],
+                                          scene["clipping_vtk_m"][0], scene["clipping_vtk_m"][1]))
+        out.append("")
+        out.append("| family | setting | frame ms (IQR) | raster / composite GPU ms | terrain p95 px "
+                   "| terrain p95 m | height p95 m | uncovered | registration p95 px | jitter p95 px "
+                   "| wrong surface | GPU MB | Pareto |")
+        out.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+        for r in rows:
+            t = r["terrain"]
+            st = r["stage_ms"]
+            stages = "%s / %s" % (fmt(st["raster"], "%.1f"), fmt(st["composite"], "%.1f")) if st else ""
+            ws = r["wrong_surface"]
+            frames = "%.1f (%.1f)" % (r["frame_ms"]["median"], r["frame_ms"]["iqr"])
+            if r["frames_reduced"]:
+                frames += " [%d frames]" % r["frames"]
+            out.append("| %s | %s | %s | %s | %s | %s | %s | %d | %s | %s | %s | %.1f | %s |" % (
+                r["family"], r["setting"], frames, stages,
+                q(t["error_px"], f="%.3f"), q(t["error_m"], f="%.1f"),
+                q(t["height_error_m"], f="%.1f"), t["missing"] + t["extra"],
+                q(r["registration_px"]) if r["registration_px"] else "–",
+                q(r["jitter_px"], f="%.3f"),
+                "%d / %d" % (ws["wrong"], ws["checked"]) if ws else "",
+                r["memory"]["gpu_total"] / 1048576.0, "**yes**" if id(r) in front_ids else ""))
+        out.append("")
+        out.append("![accuracy against time, %s](images/accuracy-vs-time-%s.png)" % (
+            scene["name"], scene["name"]))
+        out.append("")
+        out.append("Pareto front (%s): %s." % (scene["name"], "; ".join(
+            "%s %.1f ms / %s px" % (name(r), r["frame_ms"]["median"], fmt(error_of(r), "%.3g"))
+            for r in fronts.get(scene["name"], []))))
+        out.append("")
+    if data.get("matrix"):
+        grids = sorted({r["grid"] for r in data["matrix"]})
+        windows = []
+        for r in data["matrix"]:
+            if r["window"] not in windows:
+                windows.append(r["window"])
+        out.append("#### Whole Earth, grid × window (Mahsman's Tables 6.2–6.4 layout)")
+        out.append("")
+        out.append("Median frame ms, and in brackets the PGM stage / the min-reduction (GPU ms). "
+                   "Rows: grid; columns: window.")
+        out.append("")
+        out.append("| grid | " + " | ".join("%d×%d" % tuple(w) for w in windows) + " |")
+        out.append("|---|" + "---|" * len(windows))
+        for g in grids:
+            cells = []
+            for w in windows:
+                r = next((r for r in data["matrix"] if r["grid"] == g and r["window"] == w), None)
+                cells.append("–" if r is None else "%.1f (%s / %s)" % (
+                    r["frame_ms"]["median"], fmt(r["stage_ms"]["pgm"]),
+                    fmt(r["stage_ms"]["reduction"])))
+            out.append("| %d² | %s |" % (g, " | ".join(cells)))
+        out.append("")
+    if data.get("notes"):
+        out.append("Cut short: " + "; ".join(data["notes"]) + ".")
+        out.append("")
+    for c in data.get("comparisons", []):
+        out.append("- " + c["statement"])
+    return "\n".join(out) + "\n"
+
+
+BEGIN = "<!-- BEGIN GENERATED (Utilities/plot_benchmark.py) -->"
+END = "<!-- END GENERATED -->"
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("json")
+    here = os.path.dirname(os.path.abspath(__file__))
+    parser.add_argument("--images", default=os.path.join(here, "..", "Documentation", "images"))
+    parser.add_argument("--markdown", help="replace the generated part of this file")
+    parser.add_argument("--no-images", action="store_true")
+    args = parser.parse_args()
+
+    with open(args.json) as f:
+        data = json.load(f)
+    fronts = {}
+    for scene in data["scenes"]:
+        rows = [r for r in data["rows"] if r["scene"] == scene["name"]]
+        fronts[scene["name"]] = pareto(rows)
+        print("Pareto front, %s (frame ms / terrain p95 px):" % scene["name"])
+        for r in fronts[scene["name"]]:
+            print("  %-50s %9.2f ms  %9.4f px" % (name(r), r["frame_ms"]["median"], error_of(r)))
+        if not args.no_images:
+            os.makedirs(args.images, exist_ok=True)
+            path = os.path.join(args.images, "accuracy-vs-time-%s.png" % scene["name"])
+            plot_scene(scene, rows, fronts[scene["name"]], path)
+            print("  wrote %s" % path)
+
+    data["pareto"] = {
+        s: [{"family": r["family"], "setting": r["setting"], "method": r["method"],
+             "frame_ms": r["frame_ms"]["median"], "error": error_of(r)} for r in rows]
+        for s, rows in fronts.items()
+    }
+    with open(args.json, "w") as f:
+        json.dump(data, f, indent=1)
+        f.write("\n")
+
+    text = markdown(data, fronts)
+    if args.markdown:
+        with open(args.markdown) as f:
+            doc = f.read()
+        if BEGIN not in doc or END not in doc:
+            sys.exit("%s has no %s ... %s markers" % (args.markdown, BEGIN, END))
+        head, rest = doc.split(BEGIN, 1)
+        _, tail = rest.split(END, 1)
+        with open(args.markdown, "w") as f:
+            f.write(head + BEGIN + "\n" + text + END + tail)
+        print("updated %s" % args.markdown)
+    else:
+        sys.stdout.write(text)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
