@@ -21,7 +21,8 @@
 //   grid         grid 128^2 .. 1024^2;
 //   grid-window  grid = 1/2, 1, 2 x the window's larger side;
 //   depth        Default / Logarithmic (vtkGlobeDepthPass) x VTK's plain clipping / the policy;
-//   precision    (reserved: vtkGlobeMapper::SetHighPrecisionGeodetic, see the TODO in Settings());
+//   precision    float geodetic coordinates (vtkGlobeMapper::HighPrecisionGeodeticOff) against
+//                the default hi/lo ones;
 //   composition  colour layers nearest, feather 0 / 32 texels (all layers), Kooima's projection
 //                weight (colour layers);
 //   effects      unlit, each effect alone on top of lighting, all;
@@ -786,7 +787,7 @@ void Benchmark::ResetDefaults()
       layer->SetInterpolationToLinear();
     }
   }
-  // TODO(precision): m->SetHighPrecisionGeodetic(true); once the mapper has it (its default).
+  this->Scene.Mapper->SetHighPrecisionGeodetic(true);
 }
 
 /**
@@ -830,10 +831,12 @@ std::vector<Setting> Benchmark::Settings()
       list.push_back(d);
     }
   }
-  // TODO(precision): the mapper's hi/lo geodetic switch is being added on another branch
-  // (vtkGlobeMapper::SetHighPrecisionGeodetic(bool), default on). When it lands, add its sweep
-  // here, one line (and the default in ResetDefaults()):
-  //   list.push_back({ "precision", "float geodetic", [m] { m->SetHighPrecisionGeodetic(false); } });
+  // The float path the hi/lo geodetic coordinates replaced (Documentation/rendering.md
+  // "Geodetic precision"): what the precision costs and buys.
+  if (!this->Opt.EffectsOnly)
+  {
+    list.push_back({ "precision", "float geodetic", [m] { m->SetHighPrecisionGeodetic(false); } });
+  }
   if (!this->Opt.EffectsOnly)
   {
     std::vector<Setting> composition;
