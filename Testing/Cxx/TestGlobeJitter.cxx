@@ -22,9 +22,11 @@
 //    Documentation/rendering.md "Geodetic precision"), projected by the camera in double, on
 //    that pixel's centre within 0.05 px: the texture slip inside the surface, which depth cannot
 //    see.
-//  - the same globe checks at (179.99 E, 80 N), where a float unit direction has 0.4 m steps:
-//    within 0.05 px with HighPrecisionGeodetic on, more than 1 px off with it off (at (0, 0) the
-//    float direction (1, y, z) is exact to first order, so the option changes nothing there).
+//  - the globe alone, looked at from 1 cm, 1 m, 10 m and 800 m above its terrain (the Cozzi
+//    scene's "1 m" is 1.2 m from the terrain below the plane), at (0, 0) and at (179.99 E, 80 N),
+//    where a float unit direction has 0.4 m steps: within 0.05 px with HighPrecisionGeodetic on,
+//    more than 1 px off at the far place with it off (at (0, 0) the float direction (1, y, z) is
+//    exact to first order, so the option changes nothing there).
 #include "vtkCellArray.h"
 #include "vtkFloatArray.h"
 #include "vtkGlobeRenderingTestHelpers.h"
@@ -455,30 +457,35 @@ int TestGlobeJitter(int, char*[])
     double Lon, Lat;
     bool HighPrecision;
   };
-  const Place places[] = { { "(179.99, 80), on ", 179.99, 80.0, true },
+  const Place places[] = { { "(0, 0), on         ", 0.0, 0.0, true },
+    { "(179.99, 80), on ", 179.99, 80.0, true },
     { "(179.99, 80), off", 179.99, 80.0, false }, { "(0, 0), off       ", 0.0, 0.0, false } };
   for (const Place& place : places)
   {
     scene.Mapper->SetHighPrecisionGeodetic(place.HighPrecision);
     double here[3];
-    body->GeodeticToCartesian(place.Lon, place.Lat, 0.0, here);
+    body->GeodeticToCartesian(place.Lon, place.Lat, TerrainHeight, here);
     body->ComputeEastNorthUp(place.Lon, place.Lat, east, north, up);
     for (int mode : { vtkGlobeDepthPass::Default, vtkGlobeDepthPass::Logarithmic })
     {
-      if (place.Lon == 0.0 && mode == vtkGlobeDepthPass::Logarithmic)
+      if (place.Lon == 0.0 && !place.HighPrecision && mode == vtkGlobeDepthPass::Logarithmic)
       {
         continue;
       }
       auto pass = vtkGlobeTest::UseDepthMode(scene, mode);
-      for (int di = 0; di < 3; ++di)
+      // From the terrain itself: the clipping policy's smallest near plane (1 cm) upwards.
+      const double groundDistances[4] = { 0.01, 1.0, 10.0, 800.0 };
+      const double groundViewAngles[4] = { 90.0, 90.0, 30.0, 1.0 };
+      for (int di = 0; di < 4; ++di)
       {
-        const double D = distances[di];
-        const double footprint = 2.0 * D * std::tan(vtkMath::RadiansFromDegrees(viewAngles[di]) / 2) / H;
+        const double D = groundDistances[di];
+        const double footprint =
+          2.0 * D * std::tan(vtkMath::RadiansFromDegrees(groundViewAngles[di]) / 2) / H;
         GlobeStats st;
         for (int k = 0; k <= 10; ++k)
         {
           double eye[3];
-          Pose(scene.Renderer->GetActiveCamera(), here, east, north, up, D, viewAngles[di], footprint, k, eye);
+          Pose(scene.Renderer->GetActiveCamera(), here, east, north, up, D, groundViewAngles[di], footprint, k, eye);
           scene.Renderer->ResetCameraClippingRange();
           scene.Render();
           MeasureGlobe(scene, pass, eye, footprint, D, st);
@@ -487,7 +494,7 @@ int TestGlobeJitter(int, char*[])
         // Off at the far place: float directions of 0.4 m against pixels of 9 .. 62 mm.
         const bool expected = place.Lon == 0.0 ? true
                                                : (place.HighPrecision ? st.Slip <= 0.05 : st.Slip > 1.0);
-        std::printf("%s %-11s %4.0f m: depth |dt| worst %.2e px, G-buffer slip median %.2e px, "
+        std::printf("%s %-11s %6.2f m: depth |dt| worst %.2e px, G-buffer slip median %.2e px, "
                     "worst %.2e px (pixel (%g, %g), %.3g m away) over %d pixels x 11 poses, NaN %d%s\n",
           place.Name, vtkGlobeDepthPass::GetModeAsString(mode), D, st.Depth, st.SlipMedian, st.Slip,
           st.SlipAt[0], st.SlipAt[1], st.SlipAt[2], st.Pixels / 11, st.NaN, expected ? "" : "  <-- UNEXPECTED");

@@ -42,10 +42,13 @@ float globe_length(vec3 v)
 // perpendicular to the nadir). Cancellation-free forms:
 //   t = a (d + r) / D,  D = d cos w + S,  S = sqrt(r^2 - d^2 sin^2 w)
 //   s = (-(d S + r^2 cos w) nadir + a (d + r) sin w k) / (r D)      (unit, from the centre)
+// g = (cos, sin) of the normal angle (s = -cos g nadir + sin g k), from the two coefficients
+// themselves: sin g read back from the float unit vector s (dot(s, k)) carries 1 ulp of its
+// components, 6e-8 or 0.4 m on the Earth, wherever none of them is small.
 // Returns false for a miss; past the tangent the tangent point is returned (S = 0), so every
 // value stays finite.
 bool globe_sphereHit(float cosW, float sinW, float d, float r, float a, vec3 nadir, vec3 k,
-  GLOBE_OUT(float) t, GLOBE_OUT(vec3) s)
+  GLOBE_OUT(float) t, GLOBE_OUT(vec3) s, GLOBE_OUT(vec2) g)
 {
   // S^2 = r^2 - d^2 sin^2 w = (d cos w)^2 - a (d + r): the first form cancels near the tangent
   // (sin w ~ 1 carries an ulp), the second near the nadir; take the one that does not.
@@ -58,10 +61,14 @@ bool globe_sphereHit(float cosW, float sinW, float d, float r, float a, vec3 nad
   {
     t = 0.0f;
     s = -nadir;
+    g = vec2(1.0f, 0.0f);
     return false;
   }
   t = a * (d + r) / denominator;
-  s = globe_normalize(nadir * (-(d * root + r * r * cosW)) + k * (a * (d + r) * sinW));
+  float along = d * root + r * r * cosW;
+  float across = a * (d + r) * sinW;
+  g = vec2(along, across) * globe_inverseSqrt(along * along + across * across);
+  s = globe_normalize(nadir * (-along) + k * across);
   return q >= 0.0f && cosW > 0.0f;
 }
 
@@ -82,7 +89,8 @@ float globe_pgmGridPoint(vec3 ray, vec3 nadir, vec3 anyPerpendicular, float d, f
   // A ray along the nadir has no plane of its own: any perpendicular will do (DESIGN.md §8).
   vec3 k = sinW > 0.0f ? across / sinW : anyPerpendicular;
   float t = 0.0f;
-  bool hit = globe_sphereHit(cosW, sinW, d, rP, aP, nadir, k, t, s);
+  vec2 g = vec2(1.0f, 0.0f);
+  bool hit = globe_sphereHit(cosW, sinW, d, rP, aP, nadir, k, t, s, g);
   p = ray * t;
   if (!hit)
   {
@@ -97,14 +105,20 @@ float globe_pgmGridPoint(vec3 ray, vec3 nadir, vec3 anyPerpendicular, float d, f
       float omegaS = mix(blendStartS, tauS, f);
       float tS = 0.0f;
       vec3 sS = s;
-      globe_sphereHit(cos(omegaS), sin(omegaS), d, rS, aS, nadir, k, tS, sS);
-      s = globe_normalize(mix(s, sS, f));
+      vec2 gS = g;
+      globe_sphereHit(cos(omegaS), sin(omegaS), d, rS, aS, nadir, k, tS, sS, gS);
+      // Both directions lie in the (nadir, k) plane: blend their (cos g, sin g) there, so sin g
+      // keeps its relative precision (a camera 1 cm up sees normal angles of 1e-8 past the
+      // blend start, below the float noise of a unit vector's dot product).
+      vec2 m = mix(g, gS, f);
+      m = m * globe_inverseSqrt(dot(m, m));
       // The primary-sphere point in direction s, relative to the eye, in the E1 form
       // (a + r (1 - cos g)) nadir + r sin g k: s * rP + nadir * d would subtract two numbers
       // of about 1 and leave float noise of 1 ulp of the radius (0.4 m on the Earth) in every
       // vertex past the blend start. cos g is taken from sin g so the point stays on the sphere.
-      float sinG = clamp(dot(s, k), 0.0f, 1.0f);
+      float sinG = clamp(m.y, 0.0f, 1.0f);
       float cosG = sqrt(max(1.0f - sinG * sinG, 0.0f));
+      s = globe_normalize(nadir * (-cosG) + k * sinG);
       p = nadir * (aP + rP * sinG * sinG / (1.0f + cosG)) + k * (rP * sinG);
     }
   }
