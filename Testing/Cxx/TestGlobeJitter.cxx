@@ -22,8 +22,9 @@
 //    Documentation/rendering.md "Geodetic precision"), projected by the camera in double, on
 //    that pixel's centre within 0.05 px: the texture slip inside the surface, which depth cannot
 //    see.
-//  - the globe alone, looked at from 1 cm, 1 m, 10 m and 800 m above its terrain (the Cozzi
-//    scene's "1 m" is 1.2 m from the terrain below the plane), at (0, 0) and at (179.99 E, 80 N),
+//  - the globe alone, looked at from 1 cm, 1 m, 10 m and 800 m away from a point of its
+//    terrain, 45 degrees up (7.1 mm .. 566 m above it; the Cozzi scene's "1 m" is 1.2 m from
+//    the terrain below the plane), at (0, 0) and at (179.99 E, 80 N),
 //    where a float unit direction has 0.4 m steps: within 0.05 px with HighPrecisionGeodetic on,
 //    more than 1 px off at the far place with it off (at (0, 0) the float direction (1, y, z) is
 //    exact to first order, so the option changes nothing there).

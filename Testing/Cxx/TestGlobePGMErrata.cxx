@@ -10,6 +10,10 @@
 //     metric is well conditioned at the tangent: moving along a grazing ray keeps the height),
 //     the hit flag agrees away from the tangent, and nothing is NaN.
 //  2b. Past the blend start (the secondary sphere on): the float vertex on the primary sphere.
+//  2c. The same region from 7 mm over the ground at (179.99 E, 80 N), where every component of
+//     a float unit vector carries 6e-8 of noise and the normal angles are ~1e-8: along a grid
+//     line the vertices must move outward monotonically (a fold put long triangles under the
+//     camera, TestGlobeJitter at 1 cm).
 //  3. E4 on Mars above 1,000 km (tau_s < b, where the printed blend returned NaN): the blend
 //     region sampled finely is finite, continuous at b and never folds back.
 #include "vtkGlobeEllipsoid.h"
@@ -227,6 +231,77 @@ int TestGlobePGMErrata(int, char*[])
       std::printf("  %.0f m over the ground: worst %.3g m, worst/bound %.3f, NaN %d\n", above, worstM,
         worst, nans);
       ok &= worst <= 1.0 && nans == 0 && grid->GetSecondaryRadius() > 0;
+    }
+  }
+
+  // 2c. Monotonic vertices along a grid line past the blend start, far from the axes.
+  std::printf("2c. Blend region from 7 mm up at (179.99, 80): vertices along a grid line\n");
+  {
+    vtkNew<vtkGlobeEllipsoid> wgs84;
+    vtkNew<vtkGlobeProjectiveGrid> grid;
+    grid->SetEllipsoid(wgs84);
+    for (double above : { 0.0071, 1.0, 100.0 })
+    {
+      double eye[3], east[3], north[3], up[3];
+      wgs84->GeodeticToCartesian(179.99, 80.0, -0.5 + above, eye);
+      wgs84->ComputeEastNorthUp(179.99, 80.0, east, north, up);
+      // A view straight along east, from 45 degrees down to the horizon.
+      double corners[12];
+      const double cornerDirs[4][2] = { { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } };
+      for (int c = 0; c < 4; ++c)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          corners[3 * c + k] = east[k] + 0.5 * cornerDirs[c][0] * north[k] +
+            0.5 * (cornerDirs[c][1] - 1.0) * up[k];
+        }
+      }
+      grid->Update(eye, corners, up, -0.5, -0.5);
+      const double* nadir = grid->GetNadir();
+      const double* perp = grid->GetNadirPerpendicular();
+      const double b = grid->GetBlendStart(), tau0 = grid->GetPrimaryTangentAngle();
+      const double rP = grid->GetPrimaryRadius(), dd = grid->GetDistance();
+      const F::vec3 nf(static_cast<float>(nadir[0]), static_cast<float>(nadir[1]), static_cast<float>(nadir[2]));
+      const F::vec3 pf(static_cast<float>(perp[0]), static_cast<float>(perp[1]), static_cast<float>(perp[2]));
+      // The plane of the grid line: the nadir and the (float) ray's component across it.
+      int folds = 0, nans = 0, steps = 0;
+      L previous = -1;
+      for (int i = 1; i < 2000; ++i)
+      {
+        const double omega = b + (tau0 - b) * i / 2000.0;
+        const F::vec3 ray(static_cast<float>(std::cos(omega) * nadir[0] + std::sin(omega) * east[0]),
+          static_cast<float>(std::cos(omega) * nadir[1] + std::sin(omega) * east[1]),
+          static_cast<float>(std::cos(omega) * nadir[2] + std::sin(omega) * east[2]));
+        F::vec3 sv, p;
+        F::globe_pgmGridPoint(ray, nf, pf, static_cast<float>(dd), static_cast<float>(rP),
+          static_cast<float>(grid->GetAltitude()), static_cast<float>(tau0), static_cast<float>(b),
+          static_cast<float>(grid->GetSecondaryRadius()),
+          static_cast<float>(dd - grid->GetSecondaryRadius()),
+          static_cast<float>(grid->GetSecondaryBlendStart()),
+          static_cast<float>(grid->GetSecondaryTangentAngle()), sv, p);
+        if (std::isnan(p.x + p.y + p.z))
+        {
+          ++nans;
+          continue;
+        }
+        // Distance from the nadir line (long double): must grow along the line.
+        L along = 0, p2 = 0;
+        for (int k = 0; k < 3; ++k)
+        {
+          along += static_cast<L>(p[k]) * nadir[k];
+          p2 += static_cast<L>(p[k]) * p[k];
+        }
+        const L across = std::sqrt(std::max(p2 - along * along, static_cast<L>(0)));
+        if (across < previous)
+        {
+          ++folds;
+        }
+        previous = across;
+        ++steps;
+      }
+      std::printf("  %.4g m over the ground: %d of %d steps fold back, NaN %d\n", above, folds,
+        steps, nans);
+      ok &= folds == 0 && nans == 0 && grid->GetSecondaryRadius() > 0;
     }
   }
 
