@@ -36,6 +36,27 @@ struct Frame
   double Nadir[3], Perp[3], Other[3];
 };
 
+/// globe_pgmGridPoint in float for the ray at angle omega from the nadir towards `towards`,
+/// with the grid's frame rounded to float as the mapper uploads it. Returns the hit flag.
+float FloatGridPoint(vtkGlobeProjectiveGrid* grid, double omega, const double towards[3],
+  F::vec3& s, F::vec3& p)
+{
+  const double* nadir = grid->GetNadir();
+  const double* perp = grid->GetNadirPerpendicular();
+  const F::vec3 nf(static_cast<float>(nadir[0]), static_cast<float>(nadir[1]), static_cast<float>(nadir[2]));
+  const F::vec3 pf(static_cast<float>(perp[0]), static_cast<float>(perp[1]), static_cast<float>(perp[2]));
+  const F::vec3 ray(static_cast<float>(std::cos(omega) * nadir[0] + std::sin(omega) * towards[0]),
+    static_cast<float>(std::cos(omega) * nadir[1] + std::sin(omega) * towards[1]),
+    static_cast<float>(std::cos(omega) * nadir[2] + std::sin(omega) * towards[2]));
+  return F::globe_pgmGridPoint(ray, nf, pf, static_cast<float>(grid->GetDistance()),
+    static_cast<float>(grid->GetPrimaryRadius()), static_cast<float>(grid->GetAltitude()),
+    static_cast<float>(grid->GetPrimaryTangentAngle()), static_cast<float>(grid->GetBlendStart()),
+    static_cast<float>(grid->GetSecondaryRadius()),
+    static_cast<float>(grid->GetDistance() - grid->GetSecondaryRadius()),
+    static_cast<float>(grid->GetSecondaryBlendStart()),
+    static_cast<float>(grid->GetSecondaryTangentAngle()), s, p);
+}
+
 /// Float PGM hit for a ray at angle omega from the nadir (azimuth fixed), against the
 /// long-double intersection of the float-rounded ray. Returns the height error (m) of the
 /// float hit over the sphere, or -1 for a miss (both agree) / -2 for a flag disagreement.
@@ -186,22 +207,13 @@ int TestGlobePGMErrata(int, char*[])
       const double b = grid->GetBlendStart(), tau0 = grid->GetPrimaryTangentAngle();
       const double rP = grid->GetPrimaryRadius(), dd = grid->GetDistance();
       const F::vec3 nf(static_cast<float>(nadir[0]), static_cast<float>(nadir[1]), static_cast<float>(nadir[2]));
-      const F::vec3 pf(static_cast<float>(perp[0]), static_cast<float>(perp[1]), static_cast<float>(perp[2]));
       double worst = 0.0, worstM = 0.0;
       int nans = 0;
       for (int i = 1; i < 200; ++i)
       {
         const double omega = b + (tau0 - b) * i / 200.0;
-        const F::vec3 ray(static_cast<float>(std::cos(omega) * nadir[0] + std::sin(omega) * perp[0]),
-          static_cast<float>(std::cos(omega) * nadir[1] + std::sin(omega) * perp[1]),
-          static_cast<float>(std::cos(omega) * nadir[2] + std::sin(omega) * perp[2]));
         F::vec3 sv, p;
-        F::globe_pgmGridPoint(ray, nf, pf, static_cast<float>(dd), static_cast<float>(rP),
-          static_cast<float>(grid->GetAltitude()), static_cast<float>(tau0), static_cast<float>(b),
-          static_cast<float>(grid->GetSecondaryRadius()),
-          static_cast<float>(dd - grid->GetSecondaryRadius()),
-          static_cast<float>(grid->GetSecondaryBlendStart()),
-          static_cast<float>(grid->GetSecondaryTangentAngle()), sv, p);
+        FloatGridPoint(grid, omega, perp, sv, p);
         if (std::isnan(p.x + p.y + p.z))
         {
           ++nans;
@@ -258,27 +270,14 @@ int TestGlobePGMErrata(int, char*[])
       }
       grid->Update(eye, corners, up, -0.5, -0.5);
       const double* nadir = grid->GetNadir();
-      const double* perp = grid->GetNadirPerpendicular();
       const double b = grid->GetBlendStart(), tau0 = grid->GetPrimaryTangentAngle();
-      const double rP = grid->GetPrimaryRadius(), dd = grid->GetDistance();
-      const F::vec3 nf(static_cast<float>(nadir[0]), static_cast<float>(nadir[1]), static_cast<float>(nadir[2]));
-      const F::vec3 pf(static_cast<float>(perp[0]), static_cast<float>(perp[1]), static_cast<float>(perp[2]));
-      // The plane of the grid line: the nadir and the (float) ray's component across it.
       int folds = 0, nans = 0, steps = 0;
       L previous = -1;
       for (int i = 1; i < 2000; ++i)
       {
         const double omega = b + (tau0 - b) * i / 2000.0;
-        const F::vec3 ray(static_cast<float>(std::cos(omega) * nadir[0] + std::sin(omega) * east[0]),
-          static_cast<float>(std::cos(omega) * nadir[1] + std::sin(omega) * east[1]),
-          static_cast<float>(std::cos(omega) * nadir[2] + std::sin(omega) * east[2]));
         F::vec3 sv, p;
-        F::globe_pgmGridPoint(ray, nf, pf, static_cast<float>(dd), static_cast<float>(rP),
-          static_cast<float>(grid->GetAltitude()), static_cast<float>(tau0), static_cast<float>(b),
-          static_cast<float>(grid->GetSecondaryRadius()),
-          static_cast<float>(dd - grid->GetSecondaryRadius()),
-          static_cast<float>(grid->GetSecondaryBlendStart()),
-          static_cast<float>(grid->GetSecondaryTangentAngle()), sv, p);
+        FloatGridPoint(grid, omega, east, sv, p);
         if (std::isnan(p.x + p.y + p.z))
         {
           ++nans;
@@ -330,18 +329,10 @@ int TestGlobePGMErrata(int, char*[])
     const double* nadir = grid->GetNadir();
     const double* perp = grid->GetNadirPerpendicular();
     const F::vec3 nf(static_cast<float>(nadir[0]), static_cast<float>(nadir[1]), static_cast<float>(nadir[2]));
-    const F::vec3 pf(static_cast<float>(perp[0]), static_cast<float>(perp[1]), static_cast<float>(perp[2]));
     // Normal angle (from the anti-nadir) of the direction sampled by the ray at omega; -1: miss.
     auto gammaAt = [&](double omega, bool& nan) {
-      const F::vec3 ray(static_cast<float>(std::cos(omega) * nadir[0] + std::sin(omega) * perp[0]),
-        static_cast<float>(std::cos(omega) * nadir[1] + std::sin(omega) * perp[1]),
-        static_cast<float>(std::cos(omega) * nadir[2] + std::sin(omega) * perp[2]));
       F::vec3 s, p;
-      const float hit = F::globe_pgmGridPoint(ray, nf, pf, static_cast<float>(grid->GetDistance()),
-        static_cast<float>(grid->GetPrimaryRadius()), static_cast<float>(grid->GetAltitude()),
-        static_cast<float>(tau0), static_cast<float>(b), static_cast<float>(grid->GetSecondaryRadius()),
-        static_cast<float>(grid->GetDistance() - grid->GetSecondaryRadius()),
-        static_cast<float>(grid->GetSecondaryBlendStart()), static_cast<float>(tauS), s, p);
+      const float hit = FloatGridPoint(grid, omega, perp, s, p);
       nan = std::isnan(hit) || std::isnan(s.x + s.y + s.z) || std::isnan(p.x + p.y + p.z);
       if (nan || hit < 0.5f)
       {
