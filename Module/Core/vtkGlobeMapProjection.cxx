@@ -98,81 +98,61 @@ void vtkGlobeMapProjection::SetEllipsoidToWGS84()
 }
 
 //------------------------------------------------------------------------------
-void vtkGlobeMapProjection::SetToGeographic()
+void vtkGlobeMapProjection::SetParameters(int kind, double centralMeridian,
+  double standardParallel, double latitudeOfTrueScale, double scaleFactor,
+  double latitudeOfOrigin, double falseEasting, double falseNorthing)
 {
-  this->Kind = Geographic;
-  this->CentralMeridian = 0.0;
-  this->FalseEasting = this->FalseNorthing = 0.0;
+  // Every parameter is set, the ones the kind does not use to their neutral values, so no
+  // earlier projection's values linger in the state (or in PrintSelf).
+  this->Kind = kind;
+  this->CentralMeridian = centralMeridian;
+  this->StandardParallel = standardParallel;
+  this->LatitudeOfTrueScale = latitudeOfTrueScale;
+  this->ScaleFactor = scaleFactor;
+  this->LatitudeOfOrigin = latitudeOfOrigin;
+  this->FalseEasting = falseEasting;
+  this->FalseNorthing = falseNorthing;
   this->UTM = false;
   this->EPSG = 0;
   this->Modified();
+}
+
+void vtkGlobeMapProjection::SetToGeographic()
+{
+  this->SetParameters(Geographic, 0.0, 0.0, 90.0, 1.0, 0.0, 0.0, 0.0);
 }
 
 void vtkGlobeMapProjection::SetToEquirectangular(
   double centralMeridian, double standardParallel, double falseEasting, double falseNorthing)
 {
-  this->Kind = Equirectangular;
-  this->CentralMeridian = centralMeridian;
-  this->StandardParallel = standardParallel;
-  this->FalseEasting = falseEasting;
-  this->FalseNorthing = falseNorthing;
-  this->UTM = false;
-  this->EPSG = 0;
-  this->Modified();
+  this->SetParameters(
+    Equirectangular, centralMeridian, standardParallel, 90.0, 1.0, 0.0, falseEasting, falseNorthing);
 }
 
 void vtkGlobeMapProjection::SetToPolarStereographic(double latitudeOfTrueScale,
   double centralMeridian, double scaleFactor, double falseEasting, double falseNorthing)
 {
-  this->Kind = PolarStereographic;
-  this->LatitudeOfTrueScale = latitudeOfTrueScale;
-  this->CentralMeridian = centralMeridian;
-  this->ScaleFactor = scaleFactor;
-  this->FalseEasting = falseEasting;
-  this->FalseNorthing = falseNorthing;
-  this->UTM = false;
-  this->EPSG = 0;
-  this->Modified();
+  this->SetParameters(PolarStereographic, centralMeridian, 0.0, latitudeOfTrueScale, scaleFactor,
+    0.0, falseEasting, falseNorthing);
 }
 
 void vtkGlobeMapProjection::SetToMercator(double centralMeridian, double standardParallel,
   double scaleFactor, double falseEasting, double falseNorthing)
 {
-  this->Kind = Mercator;
-  this->CentralMeridian = centralMeridian;
-  this->StandardParallel = standardParallel;
-  this->ScaleFactor = scaleFactor;
-  this->FalseEasting = falseEasting;
-  this->FalseNorthing = falseNorthing;
-  this->UTM = false;
-  this->EPSG = 0;
-  this->Modified();
+  this->SetParameters(Mercator, centralMeridian, standardParallel, 90.0, scaleFactor, 0.0,
+    falseEasting, falseNorthing);
 }
 
 void vtkGlobeMapProjection::SetToWebMercator(double centralMeridian)
 {
-  this->Kind = WebMercator;
-  this->CentralMeridian = centralMeridian;
-  this->StandardParallel = 0.0;
-  this->ScaleFactor = 1.0;
-  this->FalseEasting = this->FalseNorthing = 0.0;
-  this->UTM = false;
-  this->EPSG = 0;
-  this->Modified();
+  this->SetParameters(WebMercator, centralMeridian, 0.0, 90.0, 1.0, 0.0, 0.0, 0.0);
 }
 
 void vtkGlobeMapProjection::SetToTransverseMercator(double centralMeridian, double scaleFactor,
   double falseEasting, double falseNorthing, double latitudeOfOrigin)
 {
-  this->Kind = TransverseMercator;
-  this->CentralMeridian = centralMeridian;
-  this->ScaleFactor = scaleFactor;
-  this->FalseEasting = falseEasting;
-  this->FalseNorthing = falseNorthing;
-  this->LatitudeOfOrigin = latitudeOfOrigin;
-  this->UTM = false;
-  this->EPSG = 0;
-  this->Modified();
+  this->SetParameters(TransverseMercator, centralMeridian, 0.0, 90.0, scaleFactor,
+    latitudeOfOrigin, falseEasting, falseNorthing);
 }
 
 bool vtkGlobeMapProjection::SetToUTM(int zone, bool north)

@@ -193,6 +193,9 @@ private:
   vtkGlobeMapProjection(const vtkGlobeMapProjection&) = delete;
   void operator=(const vtkGlobeMapProjection&) = delete;
 
+  void SetParameters(int kind, double centralMeridian, double standardParallel,
+    double latitudeOfTrueScale, double scaleFactor, double latitudeOfOrigin, double falseEasting,
+    double falseNorthing);
   bool ForwardUnchecked(double lon, double lat, double xy[2]);
   bool InverseUnchecked(double x, double y, double lonLat[2]);
 };

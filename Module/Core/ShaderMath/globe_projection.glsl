@@ -362,22 +362,38 @@ vec2 globe_projectEquirectangular(float lonHi, float lonLo, float latHi, float l
   return globe_projectionTexture(dLon, dLat, p2, p3);
 }
 
+// The start the conformal projections share: false outside the projection's domain; else the
+// (lon, lat) offsets from the reference, sin and cos of the latitude and the difference of its
+// sine from the reference's, with latitudes mirrored by hemi (-1: a south polar aspect).
+bool globe_conformalStart(float lonHi, float lonLo, float latHi, float latLo, float hemi,
+  vec4 p0, vec4 p1, vec4 p4, GLOBE_OUT(float) dLon, GLOBE_OUT(float) dLat,
+  GLOBE_OUT(float) sinLat, GLOBE_OUT(float) cosLat, GLOBE_OUT(float) dSin)
+{
+  if (!globe_projectionInDomain(lonHi, latHi, p4))
+  {
+    return false;
+  }
+  globe_projectionDelta(lonHi, lonLo, hemi * latHi, hemi * latLo, p0, p1, dLon, dLat);
+  globe_latitudeSinCos(hemi * latHi, hemi * latLo, sinLat, cosLat);
+  dSin = globe_sineDifference(dLat, p1);
+  return true;
+}
+
 // Mercator on the ellipsoid (e = p2.z) and Web Mercator (e = 0: spherical formulas on the
 // geodetic latitude).
 vec2 globe_projectMercator(float lonHi, float lonLo, float latHi, float latLo, vec4 p0, vec4 p1,
   vec4 p2, vec4 p3, vec4 p4, vec4 p5, vec4 p6)
 {
-  if (!globe_projectionInDomain(lonHi, latHi, p4))
+  float dLon = 0.0f;
+  float dLat = 0.0f;
+  float sinLat = 0.0f;
+  float cosLat = 0.0f;
+  float dSin = 0.0f;
+  if (!globe_conformalStart(lonHi, lonLo, latHi, latLo, 1.0f, p0, p1, p4, dLon, dLat, sinLat,
+        cosLat, dSin))
   {
     return vec2(-1.0f, -1.0f);
   }
-  float dLon = 0.0f;
-  float dLat = 0.0f;
-  globe_projectionDelta(lonHi, lonLo, latHi, latLo, p0, p1, dLon, dLat);
-  float sinLat = 0.0f;
-  float cosLat = 0.0f;
-  globe_latitudeSinCos(latHi, latLo, sinLat, cosLat);
-  float dSin = globe_sineDifference(dLat, p1);
   float dPsi = globe_isometricLatitudeDifference(dSin, sinLat, cosLat, p1.z, p1.w, p2.z);
   return globe_projectionTexture(dLon, dPsi, p2, p3);
 }
@@ -390,19 +406,17 @@ vec2 globe_projectMercator(float lonHi, float lonLo, float latHi, float latLo, v
 vec2 globe_projectPolarStereographic(float lonHi, float lonLo, float latHi, float latLo,
   vec4 p0, vec4 p1, vec4 p2, vec4 p3, vec4 p4, vec4 p5, vec4 p6)
 {
-  if (!globe_projectionInDomain(lonHi, latHi, p4))
-  {
-    return vec2(-1.0f, -1.0f);
-  }
-  float hemi = p2.w;
   float e = p2.z;
   float dLon = 0.0f;
   float dLat = 0.0f;
-  globe_projectionDelta(lonHi, lonLo, hemi * latHi, hemi * latLo, p0, p1, dLon, dLat);
   float sinLat = 0.0f;
   float cosLat = 0.0f;
-  globe_latitudeSinCos(hemi * latHi, hemi * latLo, sinLat, cosLat);
-  float dSin = globe_sineDifference(dLat, p1);
+  float dSin = 0.0f;
+  if (!globe_conformalStart(lonHi, lonLo, latHi, latLo, p2.w, p0, p1, p4, dLon, dLat, sinLat,
+        cosLat, dSin))
+  {
+    return vec2(-1.0f, -1.0f);
+  }
   float ratio = 0.0f;
   float ratioM1 = 0.0f;
   if (abs(dSin) < 0.25f * cosLat * p1.w)
@@ -431,17 +445,16 @@ vec2 globe_projectPolarStereographic(float lonHi, float lonLo, float latHi, floa
 vec2 globe_projectTransverseMercator(float lonHi, float lonLo, float latHi, float latLo,
   vec4 p0, vec4 p1, vec4 p2, vec4 p3, vec4 p4, vec4 p5, vec4 p6)
 {
-  if (!globe_projectionInDomain(lonHi, latHi, p4))
+  float dLon = 0.0f;
+  float dLat = 0.0f;
+  float sinLat = 0.0f;
+  float cosLat = 0.0f;
+  float dSin = 0.0f;
+  if (!globe_conformalStart(lonHi, lonLo, latHi, latLo, 1.0f, p0, p1, p4, dLon, dLat, sinLat,
+        cosLat, dSin))
   {
     return vec2(-1.0f, -1.0f);
   }
-  float dLon = 0.0f;
-  float dLat = 0.0f;
-  globe_projectionDelta(lonHi, lonLo, latHi, latLo, p0, p1, dLon, dLat);
-  float sinLat = 0.0f;
-  float cosLat = 0.0f;
-  globe_latitudeSinCos(latHi, latLo, sinLat, cosLat);
-  float dSin = globe_sineDifference(dLat, p1);
   float hx = 0.5f * globe_isometricLatitudeDifference(dSin, sinLat, cosLat, p1.z, p1.w, p2.z);
   float hy = 0.5f * dLon;
   // Z = sinh(dw/2) / cosh(w_r + dw/2); dzeta' = 2 atan(Z).
