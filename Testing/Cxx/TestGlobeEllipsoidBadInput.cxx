@@ -2,6 +2,7 @@
 // prolate bodies (a < c, allowed), the centre, (0, 0, 1 m) where the book's Newton method
 // never returns, and absurdly large values. Each gives defined output, an error through
 // vtkErrorMacro where it is an error, and returns: no hang, no crash.
+#include "vtkGlobeTestHelpers.h"
 #include "vtkGlobeEllipsoid.h"
 #include "vtkGlobeGeodeticTransform.h"
 #include "vtkMatrix4x4.h"
@@ -16,12 +17,11 @@
 
 namespace
 {
-int Failures = 0;
+vtkGlobeTest::Checklist Checks;
 
 void Expect(bool condition, const std::string& what)
 {
-  std::printf("  %-4s %s\n", condition ? "ok" : "FAIL", what.c_str());
-  Failures += condition ? 0 : 1;
+  Checks.Expect(condition, what);
 }
 
 bool ErrorSaid(vtkTest::ErrorObserver* observer, const std::string& words)
@@ -164,6 +164,5 @@ int TestGlobeEllipsoidBadInput(int, char*[])
   Expect(transform->GetEllipsoid() != nullptr && transform->GetEllipsoid()->GetRadii()[0] == 6378137.0,
     "SetEllipsoid(nullptr) restores WGS84");
 
-  std::printf("%d failure(s)\n", Failures);
-  return Failures == 0 ? 0 : 1;
+  return Checks.Result();
 }

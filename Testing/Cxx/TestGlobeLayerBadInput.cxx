@@ -4,6 +4,7 @@
 // non-finite scale, all-void heights. Each must return false, report an error that names
 // the file (or the in-memory data) and the reason, keep no stale data, and never hang or
 // crash. A Projected layer is not an error.
+#include "vtkGlobeTestHelpers.h"
 #include "vtkDataArray.h"
 #include "vtkGlobeLayer.h"
 #include "vtkNew.h"
@@ -22,12 +23,11 @@
 
 namespace
 {
-int Failures = 0;
+vtkGlobeTest::Checklist Checks;
 
 void Expect(bool condition, const std::string& what)
 {
-  std::printf("  %-4s %s\n", condition ? "ok" : "FAIL", what.c_str());
-  Failures += condition ? 0 : 1;
+  Checks.Expect(condition, what);
 }
 
 const std::string Data = VTKGLOBE_DATA_DIR;
@@ -268,6 +268,5 @@ int TestGlobeLayerBadInput(int, char*[])
   Expect(layer->Update() && layer->GetNumberOfVoids() == 3 && layer->GetMaximumValue() == 11,
     "SetNoDataValue(12) on in-memory heights: 3 voids, max 11");
 
-  std::printf("%d failure(s)\n", Failures);
-  return Failures == 0 ? 0 : 1;
+  return Checks.Result();
 }

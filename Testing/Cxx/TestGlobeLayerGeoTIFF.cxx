@@ -6,6 +6,7 @@
 // error naming the file and the reason: rotation, geocentric model, no model type, ground
 // control points only, a zero pixel size, coordinates that are not degrees, an unsupported
 // angular unit.
+#include "vtkGlobeTestHelpers.h"
 #include "vtkDataArray.h"
 #include "vtkGlobeLayer.h"
 #include "vtkNew.h"
@@ -26,12 +27,11 @@
 
 namespace
 {
-int Failures = 0;
+vtkGlobeTest::Checklist Checks;
 
 void Expect(bool condition, const std::string& what)
 {
-  std::printf("  %-4s %s\n", condition ? "ok" : "FAIL", what.c_str());
-  Failures += condition ? 0 : 1;
+  Checks.Expect(condition, what);
 }
 
 const std::string Temp = VTKGLOBE_TEMP_DIR;
@@ -382,6 +382,5 @@ int TestGlobeLayerGeoTIFF(int, char*[])
     refuse("dms.tif", g, "angular unit");
   }
 
-  std::printf("%d failure(s)\n", Failures);
-  return Failures == 0 ? 0 : 1;
+  return Checks.Result();
 }

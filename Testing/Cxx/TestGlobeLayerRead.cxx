@@ -2,6 +2,7 @@
 // projected, the Moon's own datum), values against OpenImageIO's direct read, the SRTM voids
 // of Everest and Rainier before and after the fill, value scale/offset, and lazy Update().
 // The expected numbers are those of Data/README.md (gdalinfo/listgeo).
+#include "vtkGlobeTestHelpers.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkGlobeLayer.h"
@@ -13,7 +14,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdarg>
 #include <cstdio>
 #include <deque>
 #include <sstream>
@@ -22,23 +22,11 @@
 
 namespace
 {
-int Failures = 0;
+vtkGlobeTest::Checklist Checks;
 
 void Expect(bool condition, const std::string& what)
 {
-  std::printf("  %-4s %s\n", condition ? "ok" : "FAIL", what.c_str());
-  Failures += condition ? 0 : 1;
-}
-
-std::string Format(const char* format, ...) __attribute__((format(printf, 1, 2)));
-std::string Format(const char* format, ...)
-{
-  char buffer[512];
-  va_list args;
-  va_start(args, format);
-  std::vsnprintf(buffer, sizeof(buffer), format, args);
-  va_end(args);
-  return buffer;
+  Checks.Expect(condition, what);
 }
 
 const std::string Data = VTKGLOBE_DATA_DIR;
@@ -56,12 +44,12 @@ void ExpectExtent(vtkGlobeLayer* layer, double west, double east, double south, 
   layer->GetGeographicExtent(e);
   Expect(Near(e[0], west, tolerance) && Near(e[1], east, tolerance) &&
       Near(e[2], south, tolerance) && Near(e[3], north, tolerance),
-    Format("extent W %.9f E %.9f S %.9f N %.9f (expected %.9f %.9f %.9f %.9f, +-%g)", e[0], e[1],
+    vtkGlobeTest::Printf("extent W %.9f E %.9f S %.9f N %.9f (expected %.9f %.9f %.9f %.9f, +-%g)", e[0], e[1],
       e[2], e[3], west, east, south, north, tolerance));
   const double dx = layer->GetDegreesPerPixel(0);
   const double dy = layer->GetDegreesPerPixel(1);
   Expect(Near(dx, degreesPerPixel, 1e-12) && Near(dy, degreesPerPixel, 1e-12),
-    Format("degrees per pixel %.12g x %.12g (expected %.12g)", dx, dy, degreesPerPixel));
+    vtkGlobeTest::Printf("degrees per pixel %.12g x %.12g (expected %.12g)", dx, dy, degreesPerPixel));
 }
 
 /// Range of the values of a float array, counting NaN and a sentinel.
@@ -100,24 +88,24 @@ void CheckSRTM(const char* name, vtkIdType expectedVoids, double expectedMin, do
   Expect(layer->Update() && layer->IsValid(), "Update() succeeds (FillVoids off)");
   const int w = layer->GetWidth(), h = layer->GetHeight();
   Expect(w == 1201 && h == 1201 && layer->GetNumberOfComponents() == 1,
-    Format("1201 x 1201 x 1: %d x %d x %d", w, h, layer->GetNumberOfComponents()));
+    vtkGlobeTest::Printf("1201 x 1201 x 1: %d x %d x %d", w, h, layer->GetNumberOfComponents()));
   Expect(layer->GetModelType() == vtkGlobeLayer::Geographic && layer->GetEPSG() == 4326,
-    Format("Geographic, EPSG %d", layer->GetEPSG()));
+    vtkGlobeTest::Printf("Geographic, EPSG %d", layer->GetEPSG()));
   // RasterPixelIsArea: the tie point is the outer corner of the first pixel.
   const double step = 1.0 / 1200.0;
   ExpectExtent(layer, west, west + 1201 * step, north - 1201 * step, north, step, 1e-9);
   Expect(layer->GetHasNoDataValue() && layer->GetNoDataValue() == -32768.0 &&
       !layer->GetNoDataValueOverridden(),
-    Format("nodata %g from the GDAL_NODATA tag", layer->GetNoDataValue()));
+    vtkGlobeTest::Printf("nodata %g from the GDAL_NODATA tag", layer->GetNoDataValue()));
   Expect(layer->GetNumberOfVoids() == expectedVoids,
-    Format("%lld voids (expected %lld)", static_cast<long long>(layer->GetNumberOfVoids()),
+    vtkGlobeTest::Printf("%lld voids (expected %lld)", static_cast<long long>(layer->GetNumberOfVoids()),
       static_cast<long long>(expectedVoids)));
   Stats raw = Measure(layer->GetData(), -32768.0f);
   Expect(raw.NaNs == expectedVoids && raw.Sentinels == 0,
-    Format("FillVoids off: the voids are NaN (%ld NaN, %ld -32768 left)", raw.NaNs, raw.Sentinels));
+    vtkGlobeTest::Printf("FillVoids off: the voids are NaN (%ld NaN, %ld -32768 left)", raw.NaNs, raw.Sentinels));
   Expect(raw.Min == expectedMin && raw.Max == expectedMax &&
       layer->GetMinimumValue() == expectedMin && layer->GetMaximumValue() == expectedMax,
-    Format("valid range %g .. %g m (expected %g .. %g), GetMinimum/MaximumValue agree", raw.Min,
+    vtkGlobeTest::Printf("valid range %g .. %g m (expected %g .. %g), GetMinimum/MaximumValue agree", raw.Min,
       raw.Max, expectedMin, expectedMax));
   // Keep the raw posts for the checks after the fill.
   std::vector<float> before(vtkFloatArray::SafeDownCast(layer->GetData())->GetPointer(0),
@@ -132,7 +120,7 @@ void CheckSRTM(const char* name, vtkIdType expectedVoids, double expectedMin, do
     agree += direct[i] == -32768 ? std::isnan(before[i]) : before[i] == direct[i];
   }
   Expect(read && agree == static_cast<long>(direct.size()),
-    Format(
+    vtkGlobeTest::Printf(
       "all %ld posts agree with OpenImageIO's native int16 read (metres, not rescaled)", agree));
 
   layer->SetFillVoids(true);
@@ -140,10 +128,10 @@ void CheckSRTM(const char* name, vtkIdType expectedVoids, double expectedMin, do
   const float* filled = vtkFloatArray::SafeDownCast(layer->GetData())->GetPointer(0);
   Stats after = Measure(layer->GetData(), -32768.0f);
   Expect(after.NaNs == 0 && after.Sentinels == 0 && layer->GetNumberOfVoids() == expectedVoids,
-    Format("filled: no NaN (%ld), no -32768 (%ld), still %lld voids counted", after.NaNs,
+    vtkGlobeTest::Printf("filled: no NaN (%ld), no -32768 (%ld), still %lld voids counted", after.NaNs,
       after.Sentinels, static_cast<long long>(layer->GetNumberOfVoids())));
   Expect(after.Max >= expectedMax && after.Max <= plausibleMax && after.Min >= expectedMin,
-    Format("filled range %g .. %g m: max within [%g, %g], never below the lowest valid post",
+    vtkGlobeTest::Printf("filled range %g .. %g m: max within [%g, %g], never below the lowest valid post",
       after.Min, after.Max, expectedMax, plausibleMax));
   bool validKept = true;
   for (size_t i = 0; i < before.size(); ++i)
@@ -206,10 +194,10 @@ void CheckSRTM(const char* name, vtkIdType expectedVoids, double expectedMin, do
               "cols %d-%d\n",
     row, col, componentSize, rowMin, rowMax, colMin, colMax);
   Expect(summit >= ringMin && summit <= ringMax,
-    Format(
+    vtkGlobeTest::Printf(
       "filled summit %.1f m lies within its valid ring %.1f .. %.1f m", summit, ringMin, ringMax));
   Expect(fillMin >= ringMin - 1e-3 && fillMax <= ringMax + 1e-3,
-    Format("the whole summit void is filled within the ring: %.1f .. %.1f m", fillMin, fillMax));
+    vtkGlobeTest::Printf("the whole summit void is filled within the ring: %.1f .. %.1f m", fillMin, fillMax));
 }
 } // namespace
 
@@ -226,26 +214,26 @@ int TestGlobeLayerRead(int, char*[])
       "not loaded before Update()");
     Expect(layer->Update() && layer->IsValid() && !observer->GetError(), "Update() succeeds");
     Expect(std::string(layer->GetName()) == "relief_2deg",
-      Format("default name is the file's base name: '%s'", layer->GetName()));
+      vtkGlobeTest::Printf("default name is the file's base name: '%s'", layer->GetName()));
     Expect(layer->GetRole() == vtkGlobeLayer::Height &&
         std::string(layer->GetRoleAsString()) == "Height",
       "role Height (the default)");
     Expect(layer->GetWidth() == 180 && layer->GetHeight() == 90 &&
         layer->GetNumberOfComponents() == 1 && layer->GetData()->GetNumberOfTuples() == 16200 &&
         vtkFloatArray::SafeDownCast(layer->GetData()),
-      Format("180 x 90 x 1, a vtkFloatArray of %lld values",
+      vtkGlobeTest::Printf("180 x 90 x 1, a vtkFloatArray of %lld values",
         static_cast<long long>(layer->GetData()->GetNumberOfTuples())));
     Expect(layer->GetModelType() == vtkGlobeLayer::Geographic && layer->GetEPSG() == 4326,
-      Format("Geographic (%d), EPSG %d", layer->GetModelType(), layer->GetEPSG()));
+      vtkGlobeTest::Printf("Geographic (%d), EPSG %d", layer->GetModelType(), layer->GetEPSG()));
     ExpectExtent(layer, -180, 180, -90, 90, 2.0, 0.0);
     Expect(layer->IsGlobal(), "IsGlobal()");
     Expect(layer->GetDatumSemiMajorAxis() == 6378137.0 &&
         Near(layer->GetDatumSemiMinorAxis(), 6356752.314245, 1e-6),
-      Format("datum from the SemiMajor + InvFlattening keys: %.6f, %.6f m",
+      vtkGlobeTest::Printf("datum from the SemiMajor + InvFlattening keys: %.6f, %.6f m",
         layer->GetDatumSemiMajorAxis(), layer->GetDatumSemiMinorAxis()));
     Expect(Near(layer->GetMinimumValue(), -6526.538, 5e-4) &&
         Near(layer->GetMaximumValue(), 5211.506, 5e-4),
-      Format("range %.4f .. %.4f m (README: -6526.5 .. 5211.5)", layer->GetMinimumValue(),
+      vtkGlobeTest::Printf("range %.4f .. %.4f m (README: -6526.5 .. 5211.5)", layer->GetMinimumValue(),
         layer->GetMaximumValue()));
     Expect(!layer->GetHasNoDataValue() && layer->GetNumberOfVoids() == 0, "no nodata, no voids");
     std::ostringstream printed;
@@ -264,7 +252,7 @@ int TestGlobeLayerRead(int, char*[])
       south += v[89 * 180 + c] / 180.0;
     }
     Expect(north < -1000 && south > 1000,
-      Format(
+      vtkGlobeTest::Printf(
         "row 0 is north: mean of row 0 (88-90N) %.0f m, of row 89 (88-90S) %.0f m", north, south));
     // Every value equals OpenImageIO's direct float read (float32 data is not rescaled).
     auto in = OIIO::ImageInput::open(Data + "/earth/relief_2deg.tif");
@@ -284,7 +272,7 @@ int TestGlobeLayerRead(int, char*[])
     auto* rgba = vtkUnsignedCharArray::SafeDownCast(layer->GetData());
     Expect(rgba && layer->GetWidth() == 2048 && layer->GetHeight() == 1024 &&
         layer->GetNumberOfComponents() == 4 && rgba->GetNumberOfComponents() == 4,
-      Format("2048 x 1024, a 4-component (RGBA) vtkUnsignedCharArray: %d x %d x %d",
+      vtkGlobeTest::Printf("2048 x 1024, a 4-component (RGBA) vtkUnsignedCharArray: %d x %d x %d",
         layer->GetWidth(), layer->GetHeight(), layer->GetNumberOfComponents()));
     ExpectExtent(layer, -180, 180, -90, 90, 0.17578125, 0.0);
     Expect(layer->IsGlobal() && layer->GetEPSG() == 4326, "global, EPSG 4326");
@@ -300,7 +288,7 @@ int TestGlobeLayerRead(int, char*[])
       opaque += p[4 * i + 3] == 255;
     }
     Expect(read && p && mismatches == 0 && opaque == 2048 * 1024,
-      Format("all 2,097,152 pixels equal OpenImageIO's direct read (%ld differ), alpha 255 (%ld)",
+      vtkGlobeTest::Printf("all 2,097,152 pixels equal OpenImageIO's direct read (%ld differ), alpha 255 (%ld)",
         mismatches, opaque));
     // The pixel that contains (lon 0, lat 0): column 1024, row 512 (row 0 is 90N).
     const size_t k = 512 * 2048 + 1024;
@@ -308,7 +296,7 @@ int TestGlobeLayerRead(int, char*[])
     {
       Expect(p[4 * k] == direct[3 * k] && p[4 * k + 1] == direct[3 * k + 1] &&
           p[4 * k + 2] == direct[3 * k + 2],
-        Format("spot check at (0E, 0N), column 1024, row 512: RGBA (%d, %d, %d, %d)", p[4 * k],
+        vtkGlobeTest::Printf("spot check at (0E, 0N), column 1024, row 512: RGBA (%d, %d, %d, %d)", p[4 * k],
           p[4 * k + 1], p[4 * k + 2], p[4 * k + 3]));
     }
   }
@@ -331,16 +319,16 @@ int TestGlobeLayerRead(int, char*[])
     layer->GetGeographicExtent(e);
     Expect(layer->GetModelType() == vtkGlobeLayer::Projected && layer->GetEPSG() == 32610 &&
         layer->GetWidth() == 876 && layer->GetHeight() == 1252,
-      Format(
+      vtkGlobeTest::Printf(
         "Projected, EPSG %d, %d x %d", layer->GetEPSG(), layer->GetWidth(), layer->GetHeight()));
     Expect(Near(origin[0], 575993.04, 0.005) && Near(origin[1], 5207152.44, 0.005) &&
         size[0] == 90.0 && size[1] == 90.0,
-      Format("origin (%.4f, %.4f) m, pixel %g x %g m", origin[0], origin[1], size[0], size[1]));
+      vtkGlobeTest::Printf("origin (%.4f, %.4f) m, pixel %g x %g m", origin[0], origin[1], size[0], size[1]));
     Expect(std::isnan(e[0]) && !layer->IsGlobal() && std::isnan(layer->GetDegreesPerPixel(0)),
       "no geographic extent, not global, no degrees per pixel");
     Expect(layer->GetHasNoDataValue() && layer->GetNoDataValue() == -32768.0 &&
         layer->GetMaximumValue() == 4370.0,
-      Format("nodata -32768; %lld voids (re-projection border + SRTM voids), max %g m",
+      vtkGlobeTest::Printf("nodata -32768; %lld voids (re-projection border + SRTM voids), max %g m",
         static_cast<long long>(layer->GetNumberOfVoids()), layer->GetMaximumValue()));
 
     layer->SetFileName((Data + "/earth/world_north_polar_3413.tif").c_str());
@@ -350,11 +338,11 @@ int TestGlobeLayerRead(int, char*[])
     layer->GetProjectedGeoTransform(origin, size);
     Expect(layer->GetModelType() == vtkGlobeLayer::Projected && layer->GetEPSG() == 3413 &&
         layer->GetWidth() == 1024 && layer->GetHeight() == 1024,
-      Format(
+      vtkGlobeTest::Printf(
         "Projected, EPSG %d, %d x %d", layer->GetEPSG(), layer->GetWidth(), layer->GetHeight()));
     Expect(origin[0] == -4.0e6 && origin[1] == 4.0e6 && size[0] == 7812.5 && size[1] == 7812.5 &&
         origin[0] + 1024 * size[0] == 4.0e6,
-      Format(
+      vtkGlobeTest::Printf(
         "origin (%.1f, %.1f) m, pixel %g m: extent +-4,000,000 m", origin[0], origin[1], size[0]));
   }
 
@@ -366,10 +354,10 @@ int TestGlobeLayerRead(int, char*[])
     layer->SetRoleToColor();
     Expect(layer->Update() && !observer->GetError(), "Update() succeeds");
     Expect(layer->GetModelType() == vtkGlobeLayer::Geographic && layer->GetEPSG() == 0,
-      Format("Geographic, EPSG %d (user-defined)", layer->GetEPSG()));
+      vtkGlobeTest::Printf("Geographic, EPSG %d (user-defined)", layer->GetEPSG()));
     Expect(
       layer->GetDatumSemiMajorAxis() == 1737400.0 && layer->GetDatumSemiMinorAxis() == 1737400.0,
-      Format("datum semi-axes %.1f, %.1f m", layer->GetDatumSemiMajorAxis(),
+      vtkGlobeTest::Printf("datum semi-axes %.1f, %.1f m", layer->GetDatumSemiMajorAxis(),
         layer->GetDatumSemiMinorAxis()));
     ExpectExtent(layer, -180, 180, -90, 90, 0.3515625, 0.0);
     Expect(layer->IsGlobal() && layer->GetWidth() == 1024 && layer->GetHeight() == 512,
@@ -394,7 +382,7 @@ int TestGlobeLayerRead(int, char*[])
       all = all && v[i] == static_cast<float>(2.0 * plain[i] + 10.0);
     }
     Expect(layer->GetMinimumValue() == 2 * min + 10 && layer->GetMaximumValue() == 2 * max + 10,
-      Format("range %.4f .. %.4f m = 2 x (%.4f .. %.4f) + 10", layer->GetMinimumValue(),
+      vtkGlobeTest::Printf("range %.4f .. %.4f m = 2 x (%.4f .. %.4f) + 10", layer->GetMinimumValue(),
         layer->GetMaximumValue(), min, max));
     Expect(all, "every value is 2 raw + 10");
 
@@ -404,7 +392,7 @@ int TestGlobeLayerRead(int, char*[])
     layer->SetValueOffset(0.0);
     const bool km = layer->Update();
     Expect(km && layer->GetNumberOfVoids() == 130953 && Near(layer->GetMaximumValue(), 8.642, 1e-6),
-      Format("Everest in km: %lld voids, max %.6f km",
+      vtkGlobeTest::Printf("Everest in km: %lld voids, max %.6f km",
         static_cast<long long>(layer->GetNumberOfVoids()), layer->GetMaximumValue()));
   }
 
@@ -416,37 +404,36 @@ int TestGlobeLayerRead(int, char*[])
     layer->Update();
     layer->Update();
     Expect(layer->GetNumberOfLoads() == 1,
-      Format("two Update() calls, one load (%d)", layer->GetNumberOfLoads()));
+      vtkGlobeTest::Printf("two Update() calls, one load (%d)", layer->GetNumberOfLoads()));
     layer->SetName("Relief");
     layer->Modified();
     layer->Update();
     Expect(layer->GetNumberOfLoads() == 1 && std::string(layer->GetName()) == "Relief",
-      Format(
+      vtkGlobeTest::Printf(
         "SetName() and Modified() alone do not re-read (%d loads)", layer->GetNumberOfLoads()));
     layer->SetValueScale(3.0);
     layer->Update();
     Expect(layer->GetNumberOfLoads() == 2,
-      Format("SetValueScale(3) re-reads (%d loads)", layer->GetNumberOfLoads()));
+      vtkGlobeTest::Printf("SetValueScale(3) re-reads (%d loads)", layer->GetNumberOfLoads()));
     layer->SetValueScale(3.0);
     layer->SetFileName(relief.c_str());
     layer->Update();
     Expect(layer->GetNumberOfLoads() == 2,
-      Format("setting the same scale and file name again does not (%d loads)",
+      vtkGlobeTest::Printf("setting the same scale and file name again does not (%d loads)",
         layer->GetNumberOfLoads()));
     layer->SetFileName((Data + "/earth/mt_rainier_90m.tif").c_str());
     layer->Update();
     Expect(layer->GetNumberOfLoads() == 3 && layer->GetWidth() == 1201,
-      Format("a new FileName re-reads (%d loads)", layer->GetNumberOfLoads()));
+      vtkGlobeTest::Printf("a new FileName re-reads (%d loads)", layer->GetNumberOfLoads()));
     layer->SetFillVoids(false);
     layer->Update();
     layer->SetNoDataValue(-32768.0); // the file's own value, but now the user's: a new setting
     layer->Update();
     Expect(layer->GetNumberOfLoads() == 5 && layer->GetNoDataValueOverridden(),
-      Format("FillVoids and SetNoDataValue re-read (%d loads)", layer->GetNumberOfLoads()));
+      vtkGlobeTest::Printf("FillVoids and SetNoDataValue re-read (%d loads)", layer->GetNumberOfLoads()));
     Expect(layer->GetData()->GetNumberOfTuples() == 1201 * 1201 && layer->IsValid(),
       "the data is there after each Update()");
   }
 
-  std::printf("%d failure(s)\n", Failures);
-  return Failures == 0 ? 0 : 1;
+  return Checks.Result();
 }

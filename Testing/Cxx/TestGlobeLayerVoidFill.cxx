@@ -22,6 +22,7 @@
 // a flat, slightly bowl-shaped top at the level of the surrounding posts, never above them.
 // With FillVoids off the voids stay NaN; the mapper must treat NaN as zero coverage (the
 // layer below shows through), never as a height.
+#include "vtkGlobeTestHelpers.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkGlobeLayer.h"
@@ -30,7 +31,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdarg>
 #include <cstdio>
 #include <functional>
 #include <limits>
@@ -39,23 +39,11 @@
 
 namespace
 {
-int Failures = 0;
+vtkGlobeTest::Checklist Checks;
 
 void Expect(bool condition, const std::string& what)
 {
-  std::printf("  %-4s %s\n", condition ? "ok" : "FAIL", what.c_str());
-  Failures += condition ? 0 : 1;
-}
-
-std::string Format(const char* format, ...) __attribute__((format(printf, 1, 2)));
-std::string Format(const char* format, ...)
-{
-  char buffer[512];
-  va_list args;
-  va_start(args, format);
-  std::vsnprintf(buffer, sizeof(buffer), format, args);
-  va_end(args);
-  return buffer;
+  Checks.Expect(condition, what);
 }
 
 constexpr int N = 64;
@@ -225,21 +213,21 @@ int TestGlobeLayerVoidFill(int, char*[])
     const double bound = (std::abs(a) + std::abs(b)) * ((1 << level) - 1) / 2.0 + 1e-3;
     Result r = Run(layer, plane, mask);
     Expect(layer->IsValid() && !observer->GetError() && layer->GetNumberOfVoids() == voids,
-      Format("valid, %lld voids counted (%ld NaN given)",
+      vtkGlobeTest::Printf("valid, %lld voids counted (%ld NaN given)",
         static_cast<long long>(layer->GetNumberOfVoids()), voids));
-    Expect(r.NaNs == 0, Format("no void remains (%ld NaN)", r.NaNs));
+    Expect(r.NaNs == 0, vtkGlobeTest::Printf("no void remains (%ld NaN)", r.NaNs));
     Expect(r.ValidKept, "valid posts unchanged");
     Expect(r.WorstError <= bound,
-      Format("|fill - plane| worst %.3f m at (col %d, row %d); bound (|a|+|b|)(2^L-1)/2 = %.3f "
+      vtkGlobeTest::Printf("|fill - plane| worst %.3f m at (col %d, row %d); bound (|a|+|b|)(2^L-1)/2 = %.3f "
              "m with L = %d",
         r.WorstError, r.WorstCol, r.WorstRow, bound, level));
     Expect(r.FillMin >= r.ValidMin && r.FillMax <= r.ValidMax,
-      Format("filled values %.2f .. %.2f within the valid range %.0f .. %.0f", r.FillMin, r.FillMax,
+      vtkGlobeTest::Printf("filled values %.2f .. %.2f within the valid range %.0f .. %.0f", r.FillMin, r.FillMax,
         r.ValidMin, r.ValidMax));
     // Continuity: neighbouring posts in and around the fill differ by at most twice the
     // plane's own largest step (|a| = 3): no cliff at the edge of a void.
     Expect(r.MaxStep <= 2 * std::max(std::abs(a), std::abs(b)),
-      Format("largest step between neighbours touching the fill %.3f m (plane: %g)", r.MaxStep,
+      vtkGlobeTest::Printf("largest step between neighbours touching the fill %.3f m (plane: %g)", r.MaxStep,
         std::max(std::abs(a), std::abs(b))));
   }
 
@@ -249,7 +237,7 @@ int TestGlobeLayerVoidFill(int, char*[])
     Result r = Run(
       layer, [](int, int) { return 1234.5; }, mask);
     Expect(r.NaNs == 0 && r.WorstError == 0.0,
-      Format(
+      vtkGlobeTest::Printf(
         "reproduced exactly (worst %.3g m): every fill is a convex combination", r.WorstError));
   }
 
@@ -259,7 +247,7 @@ int TestGlobeLayerVoidFill(int, char*[])
     Result r = Run(layer, plane, mask);
     Expect(r.NaNs == 0 && r.ValidKept, "filled, valid posts unchanged");
     Expect(r.FillMin >= r.ValidMin && r.FillMax <= r.ValidMax,
-      Format("filled values %.2f .. %.2f within the valid range (no extrapolated slope: worst "
+      vtkGlobeTest::Printf("filled values %.2f .. %.2f within the valid range (no extrapolated slope: worst "
              "|fill - plane| %.2f m at col %d row %d, reported, not bounded)",
         r.FillMin, r.FillMax, r.WorstError, r.WorstCol, r.WorstRow));
   }
@@ -277,11 +265,11 @@ int TestGlobeLayerVoidFill(int, char*[])
     // require the dip to stay well under it and report it.
     const double dip = std::max(0.0, ringMin - summit);
     Expect(r.NaNs == 0 && summit <= ringMax && dip < 0.1 * (ringMax - ringMin),
-      Format("the summit post is filled at %.1f m; ring %.1f .. %.1f m; dip below the ring "
+      vtkGlobeTest::Printf("the summit post is filled at %.1f m; ring %.1f .. %.1f m; dip below the ring "
              "%.1f m < 10%% of the ring's relief (%.1f m): a shallow bowl, not a pit",
         summit, ringMin, ringMax, dip, ringMax - ringMin));
     Expect(r.FillMax <= ringMax,
-      Format("no spike: the fill %.1f .. %.1f m stays below the highest valid post %.1f m "
+      vtkGlobeTest::Printf("no spike: the fill %.1f .. %.1f m stays below the highest valid post %.1f m "
              "(a flat top, lower than the true 8000 m peak)",
         r.FillMin, r.FillMax, ringMax));
   }
@@ -293,10 +281,10 @@ int TestGlobeLayerVoidFill(int, char*[])
     Result r = Run(layer, plane, mask);
     Expect(
       layer->IsValid() && r.NaNs == 16 * 12 && layer->GetNumberOfVoids() == 16 * 12 && r.ValidKept,
-      Format(
+      vtkGlobeTest::Printf(
         "the %ld voids stay NaN (zero coverage for the mapper), valid posts unchanged", r.NaNs));
     Expect(layer->GetMinimumValue() == 0 && layer->GetMaximumValue() == 3 * 63 + 2 * 63,
-      Format("range %g .. %g m from the valid posts only", layer->GetMinimumValue(),
+      vtkGlobeTest::Printf("range %g .. %g m from the valid posts only", layer->GetMinimumValue(),
         layer->GetMaximumValue()));
     layer->SetFillVoids(true);
     Expect(layer->Update() && layer->GetNumberOfLoads() >= 2 &&
@@ -304,6 +292,5 @@ int TestGlobeLayerVoidFill(int, char*[])
       "FillVoids on again + Update(): re-processed from the kept in-memory copy, filled");
   }
 
-  std::printf("%d failure(s)\n", Failures);
-  return Failures == 0 ? 0 : 1;
+  return Checks.Result();
 }

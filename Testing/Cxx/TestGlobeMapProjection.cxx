@@ -2,6 +2,7 @@
 // examples, GeographicLib's GeoConvert manual),
 // the defining scale of each polar projection measured with geodesics, Forward/Inverse round
 // trips over each valid domain, both longitude domains, and bad input (errors, NaN, no crash).
+#include "vtkGlobeTestHelpers.h"
 #include "vtkGlobeMapProjection.h"
 #include "vtkNew.h"
 #include "vtkTestErrorObserver.h"
@@ -15,12 +16,11 @@
 
 namespace
 {
-int Failures = 0;
+vtkGlobeTest::Checklist Checks;
 
 void Expect(bool condition, const std::string& what)
 {
-  std::printf("  %-4s %s\n", condition ? "ok" : "FAIL", what.c_str());
-  Failures += condition ? 0 : 1;
+  Checks.Expect(condition, what);
 }
 
 bool ErrorSaid(vtkTest::ErrorObserver* observer, const std::string& words)
@@ -84,7 +84,7 @@ void RoundTrips(vtkGlobeMapProjection* p, const char* what)
       if (!p->Forward(lon, lat, xy) || !p->Inverse(xy[0], xy[1], back) ||
         !p->Forward(back[0], back[1], xy2))
       {
-        ++Failures;
+        ++Checks.Failures;
         std::printf("  FAIL %s: round trip failed at (%g, %g)\n", what, lon, lat);
         continue;
       }
@@ -255,6 +255,5 @@ int TestGlobeMapProjection(int, char*[])
     "EPSG:4326 raster centred at latitude 495: false, error");
 
   p->Print(std::cout);
-  std::printf("%s\n", Failures ? "FAILED" : "passed");
-  return Failures ? 1 : 0;
+  return Checks.Result();
 }

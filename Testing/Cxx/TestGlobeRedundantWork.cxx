@@ -6,15 +6,15 @@
 #include "vtkGlobeGridPass.h"
 #include "vtkGlobeLayerSet.h"
 #include "vtkGlobeRenderingTestHelpers.h"
+#include "vtkGlobeTestHelpers.h"
 
 namespace
 {
-int Failures = 0;
+vtkGlobeTest::Checklist Checks;
 
 void Expect(bool condition, const std::string& what)
 {
-  std::printf("  %-4s %s\n", condition ? "ok" : "FAIL", what.c_str());
-  Failures += condition ? 0 : 1;
+  Checks.Expect(condition, what);
 }
 } // namespace
 
@@ -80,6 +80,5 @@ int TestGlobeRedundantWork(int, char*[])
   Expect(composite->GetFragmentShaderSource().find("globeColor0") == std::string::npos,
     "the composition source no longer samples a colour layer");
 
-  std::printf("%d failure(s)\n", Failures);
-  return Failures == 0 ? 0 : 1;
+  return Checks.Result();
 }

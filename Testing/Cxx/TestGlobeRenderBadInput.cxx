@@ -8,6 +8,7 @@
 #include "vtkGlobeProjectiveGrid.h"
 #include "vtkGlobeRasterReader.h"
 #include "vtkGlobeRenderingTestHelpers.h"
+#include "vtkGlobeTestHelpers.h"
 #include "vtkImageData.h"
 #include "vtkPNGWriter.h"
 #include "vtkPolyDataMapper.h"
@@ -19,8 +20,6 @@
 
 namespace
 {
-int Failures = 0;
-
 // Every error and warning message, from any object observed.
 class Collector : public vtkCommand
 {
@@ -59,10 +58,11 @@ std::string WritePNG(const std::string& name, double x0, double y0, double pixel
   return base + ".png";
 }
 
+vtkGlobeTest::Checklist Checks;
+
 void Expect(bool condition, const std::string& what)
 {
-  std::printf("  %-4s %s\n", condition ? "ok" : "FAIL", what.c_str());
-  Failures += condition ? 0 : 1;
+  Checks.Expect(condition, what);
 }
 
 bool NoNaN(const std::vector<float>& depth)
@@ -288,6 +288,5 @@ int TestGlobeRenderBadInput(int, char*[])
     const std::vector<float> depth = vtkGlobeTest::ReadDepth(scene.Window);
     Expect(NoNaN(depth) && NoGLError(), "a 1x1 window renders without NaN or GL error");
   }
-  std::printf("%d failure(s)\n", Failures);
-  return Failures == 0 ? 0 : 1;
+  return Checks.Result();
 }
