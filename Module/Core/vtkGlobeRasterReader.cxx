@@ -111,6 +111,275 @@ TIFF* OpenTIFF(const std::string& fileName, std::string*)
 }
 #endif
 
+//------------------------------------------------------------------------------------------
+// GeoKeys. GTIFKeyGet copies as many bytes as the key's STORED type has: a SHORT key stored as
+// DOUBLE writes 8 bytes into a 2-byte unsigned short (a stack overflow that let a corrupt
+// file load), a DOUBLE key stored as SHORT leaves 6 bytes of a double unset. Every key is
+// checked for its type and count first.
+
+enum class KeyState
+{
+  Absent,
+  Read,
+  Corrupt // present with another type or count: `why` says which
+};
+
+const char* GeoKeyTypeName(tagtype_t type)
+{
+  switch (type)
+  {
+    case TYPE_SHORT:
+      return "SHORT";
+    case TYPE_DOUBLE:
+      return "DOUBLE";
+    case TYPE_ASCII:
+      return "ASCII";
+    default:
+      return "an unknown type";
+  }
+}
+
+/// Reads a single-valued GeoKey of type `wanted` (TYPE_SHORT or TYPE_DOUBLE) into `value`.
+KeyState GetGeoKey(GTIF* gtif, geokey_t key, tagtype_t wanted, void* value, std::string& why)
+{
+  int size = 0;
+  tagtype_t type = TYPE_UNKNOWN;
+  const int count = GTIFKeyInfo(gtif, key, &size, &type);
+  if (count == 0)
+  {
+    return KeyState::Absent;
+  }
+  const char* name = GTIFKeyName(key);
+  const std::string keyName = name ? name : "GeoKey " + std::to_string(static_cast<int>(key));
+  const int wantedSize = wanted == TYPE_SHORT ? 2 : 8;
+  if (type != wanted || size != wantedSize)
+  {
+    why = "its GeoKey " + keyName + " is stored as " + GeoKeyTypeName(type) + ", not " +
+      GeoKeyTypeName(wanted) + ": the file is corrupt";
+    return KeyState::Corrupt;
+  }
+  if (count != 1)
+  {
+    why = "its GeoKey " + keyName + " holds " + std::to_string(count) +
+      " values, not 1: the file is corrupt";
+    return KeyState::Corrupt;
+  }
+  if (GTIFKeyGet(gtif, key, value, 0, 1) != 1)
+  {
+    why = "its GeoKey " + keyName + " cannot be read: the file is corrupt";
+    return KeyState::Corrupt;
+  }
+  return KeyState::Read;
+}
+
+KeyState GetShortKey(GTIF* gtif, geokey_t key, unsigned short& value, std::string& why)
+{
+  return GetGeoKey(gtif, key, TYPE_SHORT, &value, why);
+}
+
+KeyState GetDoubleKey(GTIF* gtif, geokey_t key, double& value, std::string& why)
+{
+  return GetGeoKey(gtif, key, TYPE_DOUBLE, &value, why);
+}
+
+//------------------------------------------------------------------------------------------
+// Strips and tiles as stored. libtiff replaces the byte count of a single uncompressed strip
+// that is too short by the full size (a warning only) and then reads past the strip's end,
+// e.g. into the file's own directory: a truncated file loads with garbage. The counts are
+// therefore read from the first directory itself.
+
+uint64_t Unpack(const unsigned char* p, int size, bool bigEndian)
+{
+  uint64_t v = 0;
+  for (int i = 0; i < size; ++i)
+  {
+    v |= static_cast<uint64_t>(p[bigEndian ? size - 1 - i : i]) << (8 * i);
+  }
+  return v;
+}
+
+/// The values of a SHORT, LONG or LONG8 tag of the first directory; false when absent or odd.
+bool ReadStoredTag(std::ifstream& in, uint64_t fileSize, bool bigEndian, bool bigTIFF,
+  const std::vector<unsigned char>& entries, uint16_t tag, std::vector<uint64_t>& values)
+{
+  const size_t entrySize = bigTIFF ? 20 : 12;
+  for (size_t e = 0; e + entrySize <= entries.size(); e += entrySize)
+  {
+    const unsigned char* p = entries.data() + e;
+    if (Unpack(p, 2, bigEndian) != tag)
+    {
+      continue;
+    }
+    const uint64_t type = Unpack(p + 2, 2, bigEndian);
+    const int size = type == TIFF_SHORT ? 2 : type == TIFF_LONG ? 4 : type == TIFF_LONG8 ? 8 : 0;
+    const uint64_t count = Unpack(p + 4, bigTIFF ? 8 : 4, bigEndian);
+    const unsigned char* field = p + (bigTIFF ? 12 : 8);
+    const uint64_t fieldSize = bigTIFF ? 8 : 4;
+    if (size == 0 || count == 0 || count > fileSize / size)
+    {
+      return false;
+    }
+    std::vector<unsigned char> bytes(count * size);
+    if (bytes.size() <= fieldSize)
+    {
+      std::memcpy(bytes.data(), field, bytes.size());
+    }
+    else
+    {
+      const uint64_t offset = Unpack(field, static_cast<int>(fieldSize), bigEndian);
+      if (offset > fileSize || bytes.size() > fileSize - offset ||
+        !in.seekg(static_cast<std::streamoff>(offset)) ||
+        !in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size())))
+      {
+        return false;
+      }
+    }
+    values.resize(count);
+    for (uint64_t i = 0; i < count; ++i)
+    {
+      values[i] = Unpack(bytes.data() + i * size, size, bigEndian);
+    }
+    return true;
+  }
+  return false;
+}
+
+/**
+ * Checks that every strip or tile of the first directory lies within the file and, when
+ * uncompressed, holds all its pixels. "" when it does (or when the directory cannot be
+ * parsed here: libtiff and OpenImageIO still have their say), else the reason.
+ */
+std::string CheckStoredStrips(TIFF* tif, const std::string& fileName)
+{
+  std::ifstream in(fileName, std::ios::binary);
+  std::error_code ec;
+  const uint64_t fileSize = std::filesystem::file_size(fileName, ec);
+  unsigned char header[16] = {};
+  if (!in || ec || !in.read(reinterpret_cast<char*>(header), 8))
+  {
+    return std::string();
+  }
+  const bool bigEndian = header[0] == 'M';
+  const uint64_t magic = Unpack(header + 2, 2, bigEndian);
+  const bool bigTIFF = magic == 43;
+  if ((header[0] != 'I' && header[0] != 'M') || (magic != 42 && !bigTIFF) ||
+    (bigTIFF && !in.read(reinterpret_cast<char*>(header + 8), 8)))
+  {
+    return std::string();
+  }
+  const uint64_t directory =
+    bigTIFF ? Unpack(header + 8, 8, bigEndian) : Unpack(header + 4, 4, bigEndian);
+  unsigned char countBytes[8] = {};
+  const int countSize = bigTIFF ? 8 : 2;
+  if (directory >= fileSize || !in.seekg(static_cast<std::streamoff>(directory)) ||
+    !in.read(reinterpret_cast<char*>(countBytes), countSize))
+  {
+    return std::string();
+  }
+  const uint64_t entryCount = Unpack(countBytes, countSize, bigEndian);
+  const uint64_t entrySize = bigTIFF ? 20 : 12;
+  if (entryCount == 0 || entryCount > 65535 || entryCount * entrySize > fileSize)
+  {
+    return std::string();
+  }
+  std::vector<unsigned char> entries(entryCount * entrySize);
+  if (!in.read(
+        reinterpret_cast<char*>(entries.data()), static_cast<std::streamsize>(entries.size())))
+  {
+    return std::string();
+  }
+  const bool tiled = TIFFIsTiled(tif) != 0;
+  std::vector<uint64_t> offsets, counts, rowsPerStrip;
+  if (!ReadStoredTag(in, fileSize, bigEndian, bigTIFF, entries,
+        tiled ? TIFFTAG_TILEOFFSETS : TIFFTAG_STRIPOFFSETS, offsets) ||
+    !ReadStoredTag(in, fileSize, bigEndian, bigTIFF, entries,
+      tiled ? TIFFTAG_TILEBYTECOUNTS : TIFFTAG_STRIPBYTECOUNTS, counts) ||
+    offsets.size() != counts.size())
+  {
+    return std::string();
+  }
+  uint16_t compression = COMPRESSION_NONE, planar = PLANARCONFIG_CONTIG, samples = 1;
+  uint32_t height = 0;
+  TIFFGetFieldDefaulted(tif, TIFFTAG_COMPRESSION, &compression);
+  TIFFGetFieldDefaulted(tif, TIFFTAG_PLANARCONFIG, &planar);
+  TIFFGetFieldDefaulted(tif, TIFFTAG_SAMPLESPERPIXEL, &samples);
+  TIFFGetField(tif, TIFFTAG_IMAGELENGTH, &height);
+  // Rows per strip as stored (libtiff may have cut a single strip into smaller ones).
+  uint64_t rows = height;
+  if (!tiled &&
+    ReadStoredTag(in, fileSize, bigEndian, bigTIFF, entries, TIFFTAG_ROWSPERSTRIP, rowsPerStrip))
+  {
+    rows = std::max<uint64_t>(std::min<uint64_t>(rowsPerStrip[0], height), 1);
+  }
+  const uint64_t planes = planar == PLANARCONFIG_SEPARATE ? samples : 1;
+  const uint64_t stripsPerPlane = height == 0 ? 0 : (height + rows - 1) / rows;
+  const bool checkSize =
+    compression == COMPRESSION_NONE && (tiled || counts.size() == stripsPerPlane * planes);
+  const char* what = tiled ? "tile" : "strip";
+  for (size_t i = 0; i < counts.size(); ++i)
+  {
+    if (offsets[i] == 0 && counts[i] == 0)
+    {
+      continue; // sparse: a missing block, read as zeros
+    }
+    if (offsets[i] > fileSize || counts[i] > fileSize - offsets[i])
+    {
+      return "its " + std::string(what) + " " + std::to_string(i) + " (bytes " +
+        std::to_string(offsets[i]) + " to " + std::to_string(offsets[i] + counts[i]) +
+        ") ends beyond the end of the file (" + std::to_string(fileSize) + " bytes)";
+    }
+    if (checkSize)
+    {
+      const uint64_t first = (i % std::max<uint64_t>(stripsPerPlane, 1)) * rows;
+      const uint64_t need = tiled ? TIFFTileSize64(tif)
+                                  : TIFFVStripSize64(tif,
+                                      static_cast<uint32_t>(std::min<uint64_t>(
+                                        rows, height - std::min<uint64_t>(first, height))));
+      if (counts[i] < need)
+      {
+        return "its " + std::string(what) + " " + std::to_string(i) + " holds " +
+          std::to_string(counts[i]) + " bytes (" + (tiled ? "TileByteCounts" : "StripByteCounts") +
+          ") but its uncompressed pixels need " + std::to_string(need) + " (a short " + what + ")";
+      }
+    }
+  }
+  return std::string();
+}
+
+/// CheckStoredStrips for a file; "" also for a file that is not a TIFF.
+std::string CheckStoredStrips(const std::string& fileName)
+{
+  RegisterTIFFTags();
+  std::string ignored;
+  TIFF* tif = OpenTIFF(fileName, &ignored);
+  if (!tif)
+  {
+    return std::string();
+  }
+  const std::string why = CheckStoredStrips(tif, fileName);
+  XTIFFClose(tif);
+  return why;
+}
+
+/// The size a TIFF declares, as libtiff reads it (OpenImageIO keeps sizes in int).
+bool DeclaredTIFFSize(const std::string& fileName, uint64_t& width, uint64_t& height)
+{
+  RegisterTIFFTags();
+  std::string ignored;
+  TIFF* tif = OpenTIFF(fileName, &ignored);
+  if (!tif)
+  {
+    return false;
+  }
+  uint32_t w = 0, h = 0;
+  const bool ok =
+    TIFFGetField(tif, TIFFTAG_IMAGEWIDTH, &w) && TIFFGetField(tif, TIFFTAG_IMAGELENGTH, &h);
+  XTIFFClose(tif);
+  width = w;
+  height = h;
+  return ok;
+}
+
 /// Parses a number as C does in the "C" locale ("-32768", "nan", "1e+38"), whole text only.
 bool ParseNumber(std::string s, double& value)
 {
@@ -241,6 +510,7 @@ struct Georeference
   double SemiMinor = 0.0;
   std::string Units;
   std::string Source;
+  std::string EPSGFrom; // where the EPSG code was read (a GeoKey's name, the .prj file)
 };
 
 /// What libtiff and libgeotiff tell about a file.
@@ -253,8 +523,8 @@ struct TIFFInfo
   bool HasNoData = false;
   double NoData = 0.0;
   bool NoDataUnparsed = false;
-  int Width = 0;
-  int Height = 0;
+  uint64_t Width = 0; // as declared (uint32): OpenImageIO's int may have wrapped around
+  uint64_t Height = 0;
 };
 
 /// Checks a transform: finite, not rotated or sheared, non-zero pixel size.
@@ -276,6 +546,19 @@ bool CheckTransform(const double t[6], const std::string& what, std::string& why
   if (t[1] == 0.0 || t[5] == 0.0)
   {
     why = "its pixel size is zero (" + what + ")";
+    return false;
+  }
+  // Pixels below 1e-12 of the coordinates' magnitude (and of one map unit) cannot be told
+  // apart: the extent is empty (corner + width x pixel == corner) or underflows (1e-300).
+  const double px = std::abs(t[1]), py = std::abs(t[5]);
+  if (px < 1e-12 * std::max(1.0, std::abs(t[0])) || py < 1e-12 * std::max(1.0, std::abs(t[3])))
+  {
+    char text[300];
+    std::snprintf(text, sizeof(text),
+      "its pixel size (%.6g x %.6g) is too small for its coordinates (corner %.10g, %.10g): "
+      "below 1e-12 of their magnitude, its extent is empty or not representable (",
+      px, py, t[0], t[3]);
+    why = text + what + ")";
     return false;
   }
   return true;
@@ -319,8 +602,8 @@ bool ReadGeoTIFF(const std::string& fileName, TIFFInfo& info, std::string& why)
   uint32_t w = 0, h = 0;
   TIFFGetField(tif, TIFFTAG_IMAGEWIDTH, &w);
   TIFFGetField(tif, TIFFTAG_IMAGELENGTH, &h);
-  info.Width = static_cast<int>(std::min<uint32_t>(w, std::numeric_limits<int>::max()));
-  info.Height = static_cast<int>(std::min<uint32_t>(h, std::numeric_limits<int>::max()));
+  info.Width = w;
+  info.Height = h;
 
   char* noDataText = nullptr;
   if (TIFFGetField(tif, GDALNoDataTag, &noDataText) && noDataText)
@@ -386,8 +669,14 @@ bool ReadGeoTIFF(const std::string& fileName, TIFFInfo& info, std::string& why)
     why = "its GeoTIFF keys cannot be read";
     return false;
   }
+  // Every key through GetShortKey/GetDoubleKey: a key of the wrong type is an error.
   unsigned short code = 0;
-  if (GTIFKeyGet(gtif, GTModelTypeGeoKey, &code, 0, 1) != 1)
+  KeyState state = GetShortKey(gtif, GTModelTypeGeoKey, code, why);
+  if (state == KeyState::Corrupt)
+  {
+    return false;
+  }
+  if (state == KeyState::Absent)
   {
     why = "it has no GTModelTypeGeoKey, so it is not known whether it is geographic or "
           "projected";
@@ -408,41 +697,76 @@ bool ReadGeoTIFF(const std::string& fileName, TIFFInfo& info, std::string& why)
     return false;
   }
   bool pixelIsPoint = false;
-  if (GTIFKeyGet(gtif, GTRasterTypeGeoKey, &code, 0, 1) == 1)
+  state = GetShortKey(gtif, GTRasterTypeGeoKey, code, why);
+  if (state == KeyState::Corrupt)
+  {
+    return false;
+  }
+  if (state == KeyState::Read)
   {
     pixelIsPoint = (code == RasterPixelIsPoint);
   }
   const bool geographic = geo.ModelType == vtkGlobeRasterReader::Geographic;
-  if (GTIFKeyGet(gtif, geographic ? GeographicTypeGeoKey : ProjectedCSTypeGeoKey, &code, 0, 1) ==
-      1 &&
-    code != KvUserDefined)
+  const geokey_t crsKey = geographic ? GeographicTypeGeoKey : ProjectedCSTypeGeoKey;
+  state = GetShortKey(gtif, crsKey, code, why);
+  if (state == KeyState::Corrupt)
   {
-    geo.EPSG = code;
-  }
-  // A projected CRS key in a geographic file contradicts its model type.
-  if (geographic && GTIFKeyGet(gtif, ProjectedCSTypeGeoKey, &code, 0, 1) == 1 &&
-    code != KvUserDefined)
-  {
-    why = "its georeferencing is contradictory: GTModelTypeGeoKey says geographic, but it has a "
-          "projected CRS (ProjectedCSTypeGeoKey = EPSG:" +
-      std::to_string(code) + ")";
     return false;
   }
-  if (!geographic && GTIFKeyGet(gtif, ProjLinearUnitsGeoKey, &code, 0, 1) == 1)
+  if (state == KeyState::Read && code != KvUserDefined)
   {
-    geo.Units = LengthUnitName(code);
+    geo.EPSG = code;
+    geo.EPSGFrom = geographic ? "GeographicTypeGeoKey" : "ProjectedCSTypeGeoKey";
+  }
+  // A projected CRS key in a geographic file contradicts its model type.
+  if (geographic)
+  {
+    state = GetShortKey(gtif, ProjectedCSTypeGeoKey, code, why);
+    if (state == KeyState::Corrupt)
+    {
+      return false;
+    }
+    if (state == KeyState::Read && code != KvUserDefined)
+    {
+      why = "its georeferencing is contradictory: GTModelTypeGeoKey says geographic, but it has "
+            "a projected CRS (ProjectedCSTypeGeoKey = EPSG:" +
+        std::to_string(code) + ")";
+      return false;
+    }
+  }
+  else
+  {
+    state = GetShortKey(gtif, ProjLinearUnitsGeoKey, code, why);
+    if (state == KeyState::Corrupt)
+    {
+      return false;
+    }
+    if (state == KeyState::Read)
+    {
+      geo.Units = LengthUnitName(code);
+    }
   }
 
   // The datum's ellipsoid, only when the file spells it out (a user-defined body).
   double a = 0.0, b = 0.0, inverseFlattening = 0.0;
-  if (GTIFKeyGet(gtif, GeogSemiMajorAxisGeoKey, &a, 0, 1) == 1 && a > 0.0)
+  const KeyState hasA = GetDoubleKey(gtif, GeogSemiMajorAxisGeoKey, a, why);
+  const KeyState hasB =
+    hasA == KeyState::Corrupt ? hasA : GetDoubleKey(gtif, GeogSemiMinorAxisGeoKey, b, why);
+  const KeyState hasF = hasB == KeyState::Corrupt
+    ? hasB
+    : GetDoubleKey(gtif, GeogInvFlatteningGeoKey, inverseFlattening, why);
+  if (hasF == KeyState::Corrupt)
+  {
+    return false;
+  }
+  if (hasA == KeyState::Read && a > 0.0)
   {
     geo.SemiMajor = a;
-    if (GTIFKeyGet(gtif, GeogSemiMinorAxisGeoKey, &b, 0, 1) == 1 && b > 0.0)
+    if (hasB == KeyState::Read && b > 0.0)
     {
       geo.SemiMinor = b;
     }
-    else if (GTIFKeyGet(gtif, GeogInvFlatteningGeoKey, &inverseFlattening, 0, 1) == 1)
+    else if (hasF == KeyState::Read)
     {
       // An inverse flattening of 0 denotes a sphere.
       geo.SemiMinor = inverseFlattening != 0.0 ? a * (1.0 - 1.0 / inverseFlattening) : a;
@@ -454,8 +778,14 @@ bool ReadGeoTIFF(const std::string& fileName, TIFFInfo& info, std::string& why)
     // Geographic coordinates are in GeogAngularUnits (degrees unless said otherwise).
     double degrees = 1.0;
     double unitSize = 0.0; // radians per unit
-    const bool hasSize = GTIFKeyGet(gtif, GeogAngularUnitSizeGeoKey, &unitSize, 0, 1) == 1;
-    if (GTIFKeyGet(gtif, GeogAngularUnitsGeoKey, &code, 0, 1) == 1 && code != KvUserDefined)
+    const KeyState hasSize = GetDoubleKey(gtif, GeogAngularUnitSizeGeoKey, unitSize, why);
+    const KeyState hasUnits =
+      hasSize == KeyState::Corrupt ? hasSize : GetShortKey(gtif, GeogAngularUnitsGeoKey, code, why);
+    if (hasUnits == KeyState::Corrupt)
+    {
+      return false;
+    }
+    if (hasUnits == KeyState::Read && code != KvUserDefined)
     {
       degrees = DegreesPerAngularUnit(code);
       if (degrees == 0.0)
@@ -465,7 +795,7 @@ bool ReadGeoTIFF(const std::string& fileName, TIFFInfo& info, std::string& why)
         return false;
       }
     }
-    else if (hasSize && unitSize > 0.0)
+    else if (hasSize == KeyState::Read && unitSize > 0.0)
     {
       degrees = unitSize * 180.0 / Pi;
     }
@@ -831,6 +1161,7 @@ public:
   Georeference Geo; // T normalised: north-west corner, t1 > 0, t5 < 0
   bool HasNoData = false;
   double NoData = 0.0;
+  bool StripsChecked = false; // CheckStoredStrips passed since RequestInformation
   std::string LastError;
 };
 
@@ -915,9 +1246,23 @@ int vtkGlobeRasterReader::RequestInformation(
     const int width = spec.width, height = spec.height, channels = spec.nchannels;
     if (width <= 0 || height <= 0 || spec.depth > 1 || spec.deep || channels <= 0)
     {
+      // OpenImageIO keeps sizes in int: a TIFF's uint32 size beyond 2^31 - 1 wraps around to
+      // a negative number. Say the size the file declares.
+      int64_t declaredWidth = width, declaredHeight = height;
+      uint64_t w = 0, h = 0;
+      if ((width <= 0 || height <= 0) && DeclaredTIFFSize(file, w, h))
+      {
+        declaredWidth = static_cast<int64_t>(w);
+        declaredHeight = static_cast<int64_t>(h);
+      }
+      const std::string size = std::to_string(declaredWidth) + " x " +
+        std::to_string(declaredHeight) + " x " + std::to_string(channels);
+      const int64_t intMax = std::numeric_limits<int>::max();
       return this->Fail(vtkErrorCode::FileFormatError,
-        "its raster size (" + std::to_string(width) + " x " + std::to_string(height) + " x " +
-          std::to_string(channels) + ") is not a plain 2D image");
+        declaredWidth > intMax || declaredHeight > intMax
+          ? "its declared raster size (" + size + ") is beyond the " + std::to_string(intMax) +
+            " pixels a side that VTK images (and OpenImageIO) can address"
+          : "its raster size (" + size + ") is not a plain 2D image");
     }
     int scalarType = VTK_UNSIGNED_CHAR;
     if (channels == 1)
@@ -943,7 +1288,8 @@ int vtkGlobeRasterReader::RequestInformation(
     {
       return this->Fail(vtkErrorCode::FileFormatError, why);
     }
-    if (tiff.IsTIFF && (tiff.Width != width || tiff.Height != height))
+    if (tiff.IsTIFF &&
+      (tiff.Width != static_cast<uint64_t>(width) || tiff.Height != static_cast<uint64_t>(height)))
     {
       return this->Fail(vtkErrorCode::FileFormatError, "libtiff and OpenImageIO disagree on its size");
     }
@@ -1018,6 +1364,7 @@ int vtkGlobeRasterReader::RequestInformation(
               (wkt.Keyword.empty() ? std::string("no WKT keyword") : wkt.Keyword) + ")");
         }
         geo.EPSG = wkt.EPSG;
+        geo.EPSGFrom = "its projection file '" + prj + "'";
         if (geo.EPSG == 0 && this->EPSG == 0 && geo.ModelType == Projected)
         {
           return this->Fail(vtkErrorCode::FileFormatError,
@@ -1092,6 +1439,7 @@ int vtkGlobeRasterReader::RequestInformation(
             " (" + geo.Source + "), SetEPSG says EPSG:" + std::to_string(this->EPSG));
       }
       geo.EPSG = this->EPSG;
+      geo.EPSGFrom = "SetEPSG";
     }
     if (geo.EPSG != 0)
     {
@@ -1101,6 +1449,14 @@ int vtkGlobeRasterReader::RequestInformation(
         return this->Fail(vtkErrorCode::UserError,
           "EPSG:" + std::to_string(geo.EPSG) +
             " is neither a geographic nor a projected CRS in PROJ's database");
+      }
+      if (crs.ModelType == 0)
+      {
+        // E.g. GeographicTypeGeoKey = 60000: not a code at all (32768 and up are private).
+        return this->Fail(this->EPSG != 0 ? vtkErrorCode::UserError : vtkErrorCode::FileFormatError,
+          "EPSG:" + std::to_string(geo.EPSG) + " (from " +
+            (geo.EPSGFrom.empty() ? geo.Source : geo.EPSGFrom) +
+            ") is neither a geographic nor a projected CRS in PROJ's database");
       }
       if (crs.ModelType != 0 && geo.ModelType != 0 && crs.ModelType != geo.ModelType)
       {
@@ -1142,6 +1498,17 @@ int vtkGlobeRasterReader::RequestInformation(
       t[0] += width * t[1];
       t[1] = -t[1];
     }
+    // The far corner must be finite and apart from the near one (no zero-area extent).
+    const double east = t[0] + width * t[1], south = t[3] + height * t[5];
+    if (!std::isfinite(east) || !std::isfinite(south) || !(east > t[0]) || !(south < t[3]))
+    {
+      char text[300];
+      std::snprintf(text, sizeof(text),
+        "its extent is empty or not finite: %d x %d pixels of %.6g x %.6g from the corner "
+        "(%.10g, %.10g) reach (%.10g, %.10g)",
+        width, height, t[1], -t[5], t[0], t[3], east, south);
+      return this->Fail(vtkErrorCode::FileFormatError, text);
+    }
     if (geo.ModelType == Geographic)
     {
       double box[4];
@@ -1160,6 +1527,7 @@ int vtkGlobeRasterReader::RequestInformation(
     in.Geo = geo;
     in.HasNoData = tiff.HasNoData;
     in.NoData = tiff.NoData;
+    in.StripsChecked = false;
     in.File = file;
   }
   catch (const std::exception& e)
@@ -1219,6 +1587,55 @@ int vtkGlobeRasterReader::RequestData(
   }
   try
   {
+    // File rows [r0, r1) hold VTK rows ue[2]..ue[3].
+    const int r0 = in.FlipRows ? in.Height - 1 - ue[3] : ue[2];
+    const int r1 = (in.FlipRows ? in.Height - 1 - ue[2] : ue[3]) + 1;
+    // Chunks of about a twentieth of the request, whole tile rows for tiled files.
+    const int align = in.TileHeight > 0 ? in.TileHeight : 1;
+    int chunk = std::max((r1 - r0 + 19) / 20, 1);
+    chunk = (chunk + align - 1) / align * align;
+    const OIIO::TypeDesc type =
+      in.Channels == 1 ? ReadTypeOf(in.ScalarType) : OIIO::TypeDesc(OIIO::TypeDesc::UINT8);
+    const size_t pixelBytes = type.size() * static_cast<size_t>(in.Channels);
+    const size_t rowBytes = pixelBytes * static_cast<size_t>(in.Width);
+    const int outWidth = ue[1] - ue[0] + 1;
+    const int outHeight = ue[3] - ue[2] + 1;
+
+    // Strips and tiles shorter than their pixels, or beyond the end of the file (libtiff would
+    // read past them silently for a single uncompressed strip).
+    const std::string truncated = in.StripsChecked ? std::string() : CheckStoredStrips(file);
+    if (!truncated.empty())
+    {
+      return this->Fail(vtkErrorCode::PrematureEndOfFileError,
+        "its pixels cannot be decoded; the file is corrupt or truncated: " + truncated);
+    }
+    in.StripsChecked = true;
+
+    // The memory budget, before anything is allocated: a header of a few hundred bytes can
+    // declare 30000 x 30000 floats. In double: no overflow.
+    const double MiB = 1024.0 * 1024.0;
+    const double outBytes = static_cast<double>(pixelBytes) * outWidth * outHeight;
+    const double bufferBytes = static_cast<double>(rowBytes) * std::min(chunk, in.Height);
+    if (outBytes + bufferBytes > this->MaximumMemory * MiB)
+    {
+      const bool whole = outWidth == in.Width && outHeight == in.Height;
+      char text[700];
+      std::snprintf(text, sizeof(text),
+        "%s %d x %d x %d %s%s needs %.0f MiB (%.0f MiB of pixels, %.0f bytes, and a %.0f MiB "
+        "read buffer), more than the reader's MaximumMemory (%d MiB) allows; raise it with "
+        "SetMaximumMemory (for a vtkGlobeLayer: GetFileReader()->SetMaximumMemory) where the "
+        "machine has the memory; rasters this large are better tiled or downsampled (see "
+        "\"Preparing large rasters\" in the user guide)",
+        whole ? "its declared size," : "its update extent,", outWidth, outHeight, in.Channels,
+        vtkImageScalarTypeNameMacro(in.ScalarType),
+        whole
+          ? ","
+          : (" (of " + std::to_string(in.Width) + " x " + std::to_string(in.Height) + "),").c_str(),
+        std::ceil((outBytes + bufferBytes) / MiB), std::round(outBytes / MiB), outBytes,
+        std::ceil(bufferBytes / MiB), this->MaximumMemory);
+      return this->Fail(vtkErrorCode::UserError, text);
+    }
+
     output->SetExtent(ue);
     output->SetSpacing(t[1], -t[5], 1.0);
     output->SetOrigin(t[0] + 0.5 * t[1], t[3] + in.Height * t[5] - 0.5 * t[5], 0.0);
@@ -1232,18 +1649,6 @@ int vtkGlobeRasterReader::RequestData(
       return this->Fail(vtkErrorCode::CannotOpenFileError,
         "it cannot be opened as an image any more (OpenImageIO: " + OIIO::geterror() + ")");
     }
-    // File rows [r0, r1) hold VTK rows ue[2]..ue[3].
-    const int r0 = in.FlipRows ? in.Height - 1 - ue[3] : ue[2];
-    const int r1 = (in.FlipRows ? in.Height - 1 - ue[2] : ue[3]) + 1;
-    // Chunks of about a twentieth of the request, whole tile rows for tiled files.
-    const int align = in.TileHeight > 0 ? in.TileHeight : 1;
-    int chunk = std::max((r1 - r0 + 19) / 20, 1);
-    chunk = (chunk + align - 1) / align * align;
-    const OIIO::TypeDesc type =
-      in.Channels == 1 ? ReadTypeOf(in.ScalarType) : OIIO::TypeDesc(OIIO::TypeDesc::UINT8);
-    const size_t pixelBytes = type.size() * static_cast<size_t>(in.Channels);
-    const size_t rowBytes = pixelBytes * static_cast<size_t>(in.Width);
-    const int outWidth = ue[1] - ue[0] + 1;
     unsigned char* out = static_cast<unsigned char*>(scalars->GetVoidPointer(0));
     std::vector<unsigned char> buffer;
     this->UpdateProgress(0.0);
@@ -1359,6 +1764,7 @@ void vtkGlobeRasterReader::PrintSelf(ostream& os, vtkIndent indent)
   const vtkInternals& in = *this->Internals;
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "EPSG: " << this->EPSG << "\n";
+  os << indent << "MaximumMemory: " << this->MaximumMemory << " MiB\n";
   os << indent << "LastError: " << (in.LastError.empty() ? "(none)" : in.LastError) << "\n";
   if (!in.File.empty())
   {

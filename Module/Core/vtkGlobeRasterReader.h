@@ -38,12 +38,16 @@
  * reads the update extent's rows in chunks, firing ProgressEvent after each chunk, and honours
  * AbortExecute between chunks.
  *
- * Errors (missing, unreadable, corrupt or truncated file, no georeferencing, rotated or
- * sheared rasters, contradictory georeferencing such as a world file disagreeing with the
- * GeoTIFF tags, a .prj or SetEPSG code disagreeing with the file's, or a geographic model
- * with a projected EPSG code) are reported with vtkErrorMacro naming the file and the reason,
- * set the algorithm's error code and make the request fail, so the executive stops the
- * pipeline there. GetLastError() gives the reason of the last failure.
+ * RequestData refuses a request larger than MaximumMemory before allocating anything.
+ *
+ * Errors (missing, unreadable, corrupt or truncated file, strips or tiles shorter than their
+ * pixels, no georeferencing, GeoKeys stored with the wrong type, rotated or sheared rasters,
+ * a pixel size too small for its coordinates, contradictory georeferencing such as a world
+ * file disagreeing with the GeoTIFF tags, a .prj or SetEPSG code disagreeing with the file's,
+ * or a geographic model with a projected EPSG code, an EPSG code PROJ's database does not
+ * know, a request beyond MaximumMemory) are reported with vtkErrorMacro naming the file and
+ * the reason, set the algorithm's error code and make the request fail, so the executive
+ * stops the pipeline there. GetLastError() gives the reason of the last failure.
  */
 #ifndef vtkGlobeRasterReader_h
 #define vtkGlobeRasterReader_h
@@ -84,6 +88,21 @@ public:
   vtkGetMacro(EPSG, int);
   ///@}
 
+  ///@{
+  /**
+   * The most memory, in MiB, that reading one request may allocate (the output scalars plus
+   * the read buffer). A request that would need more is refused before anything is allocated,
+   * with an error giving the declared size, the bytes it needs and this budget: a corrupt or
+   * hostile header (a few hundred bytes declaring 30000 x 30000 floats) cannot exhaust memory;
+   * RequestInformation still describes such a file. vtkGlobeLayer holds its own copy of a
+   * raster (4 bytes a pixel) to the budget of its file reader (vtkGlobeLayer::GetFileReader()).
+   * Default 2048 MiB: more than any raster that fits one OpenGL texture needs (16384 x 16384
+   * x 4 bytes = 1024 MiB). At least 1.
+   */
+  vtkSetClampMacro(MaximumMemory, int, 1, VTK_INT_MAX);
+  vtkGetMacro(MaximumMemory, int);
+  ///@}
+
   /// The reason of the last failure, "" when the last request succeeded.
   const char* GetLastError();
 
@@ -111,6 +130,7 @@ protected:
 
   char* FileName = nullptr;
   int EPSG = 0;
+  int MaximumMemory = 2048;
 
 private:
   vtkGlobeRasterReader(const vtkGlobeRasterReader&) = delete;

@@ -11,6 +11,7 @@ set(globe_core_tests
   TestGlobeLayerGeoTIFF.cxx
   TestGlobeLayerVoidFill.cxx
   TestGlobeRasterReader.cxx
+  TestGlobeRasterReaderHardening.cxx
   TestGlobeLayerInput.cxx
   TestGlobeMapProjection.cxx
   TestGlobeMapProjectionShader.cxx)
