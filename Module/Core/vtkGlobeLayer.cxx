@@ -249,11 +249,19 @@ bool SameDouble(double a, double b)
 
 /// The common end of loading heights: scale/offset, voids, range, fill. `values` holds raw
 /// values with NaN for voids. Returns false (with `why`) when no post is valid.
+/// Heights outside the plausible range: how many, and the one farthest out.
+struct Implausible
+{
+  vtkIdType Count = 0;
+  double Worst = 0.0;
+};
+
 bool FinishHeights(std::vector<float>& values, int width, int height, double scale, double offset,
-  bool fill, vtkIdType& voids, double& minimum, double& maximum, std::string& why,
-  vtkSmartPointer<vtkDataArray>& data)
+  const double plausible[2], bool fill, vtkIdType& voids, Implausible& implausible,
+  double& minimum, double& maximum, std::string& why, vtkSmartPointer<vtkDataArray>& data)
 {
   voids = 0;
+  implausible = Implausible();
   minimum = std::numeric_limits<double>::infinity();
   maximum = -minimum;
   for (float& v : values)
@@ -264,13 +272,35 @@ bool FinishHeights(std::vector<float>& values, int width, int height, double sca
       ++voids;
       continue;
     }
-    v = static_cast<float>(v * scale + offset);
+    // In double: 1e30 * scale must not overflow to an infinity that passes as a value.
+    const double metres = static_cast<double>(v) * scale + offset;
+    if (!(metres >= plausible[0] && metres <= plausible[1]))
+    {
+      // One corrupt post must not move the globe's spheres and clipping planes.
+      if (implausible.Count == 0 || std::abs(metres) > std::abs(implausible.Worst))
+      {
+        implausible.Worst = metres;
+      }
+      ++implausible.Count;
+      ++voids;
+      v = NaNf;
+      continue;
+    }
+    v = static_cast<float>(metres);
     minimum = std::min(minimum, static_cast<double>(v));
     maximum = std::max(maximum, static_cast<double>(v));
   }
   if (voids == static_cast<vtkIdType>(values.size()))
   {
     why = "it has no valid height: all " + std::to_string(voids) + " posts are nodata or NaN";
+    if (implausible.Count > 0)
+    {
+      char text[200];
+      std::snprintf(text, sizeof(text),
+        " (%lld of them outside the plausible range [%g, %g] m, e.g. %g m)",
+        static_cast<long long>(implausible.Count), plausible[0], plausible[1], implausible.Worst);
+      why += text;
+    }
     return false;
   }
   if (fill && voids > 0)
@@ -415,9 +445,12 @@ public:
     bool Loaded = false;
     unsigned long SourceGeneration = 0;
     // The file's size and modification time: a file rewritten in place is re-read by the
-    // next Update() after a Modified().
+    // next Update(), with or without Modified().
     std::uintmax_t FileSize = 0;
     long long FileTime = 0;
+    // When the algorithms upstream of the layer were last modified: a failed load is tried
+    // again only when this, the file or a setting changed (one report per failure).
+    vtkMTimeType UpstreamTime = 0;
     // The input data set and when it was last generated or modified upstream.
     vtkDataObject* InputData = nullptr;
     vtkMTimeType InputTime = 0;
@@ -428,6 +461,8 @@ public:
     bool HasNoData = false;
     double NoData = 0.0;
     bool FillVoids = true;
+    double PlausibleMinimum = -VTK_DOUBLE_MAX;
+    double PlausibleMaximum = VTK_DOUBLE_MAX;
 
     bool operator==(const Settings& o) const
     {
@@ -437,11 +472,15 @@ public:
         this->Role == o.Role && this->ValueScale == o.ValueScale &&
         this->ValueOffset == o.ValueOffset && this->NoDataOverridden == o.NoDataOverridden &&
         this->HasNoData == o.HasNoData && SameDouble(this->NoData, o.NoData) &&
-        this->FillVoids == o.FillVoids;
+        this->FillVoids == o.FillVoids && this->PlausibleMinimum == o.PlausibleMinimum &&
+        this->PlausibleMaximum == o.PlausibleMaximum && this->UpstreamTime == o.UpstreamTime;
     }
   };
 
   Settings LastLoad;
+  // What the last failed attempt depended on (Loaded false when the last attempt succeeded).
+  Settings LastFailure;
+  vtkMTimeType FailureMTime = 0; // the layer's own Modified() asks for another try
 
   // Where the data comes from; every change of source bumps the generation.
   Sources Source = None;
@@ -677,6 +716,7 @@ void vtkGlobeLayer::Invalidate()
   in.Data = nullptr;
   this->RasterWidth = this->RasterHeight = this->NumberOfComponents = 0;
   this->NumberOfVoids = 0;
+  this->NumberOfImplausibleValues = 0;
   this->ModelType = this->EPSG = 0;
   this->DatumSemiMajorAxis = this->DatumSemiMinorAxis = 0.0;
   this->MinimumValue = this->MaximumValue = 0.0;
@@ -695,30 +735,62 @@ void vtkGlobeLayer::Invalidate()
 bool vtkGlobeLayer::Update()
 {
   vtkInternals& in = *this->Internals;
-  if (in.Source == vtkInternals::None)
-  {
-    ++this->NumberOfLoads;
-    this->Invalidate();
-    vtkErrorMacro(<< "Nothing to load: no FileName is set, no input is connected and no "
-                     "in-memory data was given");
-    return false;
-  }
   vtkInternals::Settings now;
   now.Loaded = true;
   now.SourceGeneration = in.SourceGeneration;
+  now.Role = this->IsImageRole() ? Color : Height; // images load alike whatever their role
+  now.ValueScale = this->ValueScale;
+  now.ValueOffset = this->ValueOffset;
+  now.NoDataOverridden = this->NoDataValueOverridden;
+  now.HasNoData = this->NoDataValueOverridden && this->HasNoDataValue;
+  now.NoData = now.HasNoData ? this->NoDataValue : 0.0;
+  now.FillVoids = this->FillVoids;
+  now.PlausibleMinimum = this->PlausibleRange[0];
+  now.PlausibleMaximum = this->PlausibleRange[1];
   if (in.Source == vtkInternals::File)
   {
     std::error_code ec;
     now.FileSize = std::filesystem::file_size(this->FileName, ec);
     const auto time = std::filesystem::last_write_time(this->FileName, ec);
     now.FileTime = ec ? 0 : static_cast<long long>(time.time_since_epoch().count());
-    // A file rewritten in place, or one that failed (it may have appeared or been repaired),
-    // is read again.
-    if (!this->Valid || now.FileSize != in.LastLoad.FileSize ||
-      now.FileTime != in.LastLoad.FileTime)
+  }
+  auto upstreamTime = [this]() -> vtkMTimeType {
+    vtkAlgorithm* upstream = this->GetInputAlgorithm();
+    auto* executive =
+      upstream ? vtkDemandDrivenPipeline::SafeDownCast(upstream->GetExecutive()) : nullptr;
+    if (!executive)
     {
-      in.Reader->Modified();
+      return 0;
     }
+    executive->UpdatePipelineMTime();
+    return executive->GetPipelineMTime();
+  };
+  now.UpstreamTime = upstreamTime();
+  // A failure is reported once: nothing is tried again until something it depended on
+  // changed (the source, a setting, the file on disk, an algorithm upstream).
+  if (!this->Valid && in.LastFailure.Loaded && now == in.LastFailure &&
+    this->GetMTime() == in.FailureMTime)
+  {
+    return false;
+  }
+  in.LastFailure = vtkInternals::Settings();
+  if (in.Source == vtkInternals::None)
+  {
+    ++this->NumberOfLoads;
+    this->Invalidate();
+    vtkErrorMacro(<< "Nothing to load: no FileName is set, no input is connected and no "
+                     "in-memory data was given");
+    in.LastFailure = now;
+    in.FailureMTime = this->GetMTime();
+    return false;
+  }
+  if (in.Source == vtkInternals::File &&
+    (!this->Valid || now.FileSize != in.LastLoad.FileSize ||
+      now.FileTime != in.LastLoad.FileTime))
+  {
+    // A file rewritten in place, or one that failed and changed since, is read again.
+    in.Reader->Modified();
+    now.UpstreamTime = upstreamTime();
   }
 
   // Bring the input up to date: upstream algorithms re-execute only when they, or what they
@@ -738,13 +810,6 @@ bool vtkGlobeLayer::Update()
     in.Sink->GetNumberOfInputConnections(0) > 0 ? in.Sink->GetInputDataObject(0, 0) : nullptr;
   now.InputData = input;
   now.InputTime = input ? std::max(input->GetUpdateTime(), input->GetMTime()) : 0;
-  now.Role = this->IsImageRole() ? Color : Height; // images load alike whatever their role
-  now.ValueScale = this->ValueScale;
-  now.ValueOffset = this->ValueOffset;
-  now.NoDataOverridden = this->NoDataValueOverridden;
-  now.HasNoData = this->NoDataValueOverridden && this->HasNoDataValue;
-  now.NoData = now.HasNoData ? this->NoDataValue : 0.0;
-  now.FillVoids = this->FillVoids;
   if (this->Valid && now == in.LastLoad)
   {
     return true; // nothing the data depends on changed (e.g. only the Name)
@@ -774,10 +839,18 @@ bool vtkGlobeLayer::Update()
   if (!ok)
   {
     this->Invalidate();
+    // InputTime is left out: a failed upstream run leaves no new data to compare.
+    in.LastFailure = now;
+    in.LastFailure.InputData = nullptr;
+    in.LastFailure.InputTime = 0;
+    in.LastFailure.UpstreamTime = upstreamTime(); // after this attempt's own Modified()
+    in.FailureMTime = this->GetMTime();
     return false;
   }
   this->Valid = true;
   in.LastLoad = now;
+  // After the run: an algorithm may modify itself while it executes (its error code).
+  in.LastLoad.UpstreamTime = upstreamTime();
   return true;
 }
 
@@ -889,6 +962,20 @@ bool vtkGlobeLayer::Load(vtkImageData* image)
       (this->Role == Mask ? " or a 1-channel mask" : "") + ", and it has " +
       std::to_string(channels) + " channel" + (channels == 1 ? "" : "s"));
   }
+  // The layer's own copy (float heights, or the 8-bit pixels and their RGBA) is held to the
+  // memory budget of its file reader, also for in-memory data and pipeline input.
+  const double copyBytes =
+    static_cast<double>(width) * height * (this->Role == Height ? 4.0 : 4.0 + channels);
+  const int budget = in.Reader->GetMaximumMemory();
+  if (copyBytes > budget * 1024.0 * 1024.0)
+  {
+    char text[400];
+    std::snprintf(text, sizeof(text),
+      "its %d x %d copy in the layer needs %.1f MiB, more than MaximumMemory (%d MiB) allows "
+      "(the layer's file reader's setting: raise it with GetFileReader()->SetMaximumMemory)",
+      width, height, copyBytes / (1024.0 * 1024.0), budget);
+    return fail(text);
+  }
 
   // Georeferencing: the grid from the image's geometry (filters that crop or resample keep it
   // right), the rest from the reader's field data.
@@ -986,10 +1073,23 @@ bool vtkGlobeLayer::Load(vtkImageData* image)
           ") is not supported for heights");
     }
     std::string why;
-    if (!FinishHeights(heights, width, height, this->ValueScale, this->ValueOffset, this->FillVoids,
-          this->NumberOfVoids, this->MinimumValue, this->MaximumValue, why, in.Data))
+    Implausible implausible;
+    if (!FinishHeights(heights, width, height, this->ValueScale, this->ValueOffset,
+          this->PlausibleRange, this->FillVoids, this->NumberOfVoids, implausible,
+          this->MinimumValue, this->MaximumValue, why, in.Data))
     {
       return fail(why);
+    }
+    this->NumberOfImplausibleValues = implausible.Count;
+    if (implausible.Count > 0)
+    {
+      // Once per load: loads happen only when the data or a setting changed.
+      const std::string who =
+        this->Name ? "layer '" + std::string(this->Name) + "' (" + what + ")" : what;
+      vtkWarningMacro(<< who << ": " << implausible.Count << " of " << n
+                      << " heights lie outside the plausible range [" << this->PlausibleRange[0]
+                      << ", " << this->PlausibleRange[1] << "] m (e.g. " << implausible.Worst
+                      << " m); they are treated as voids");
     }
     this->NumberOfComponents = 1;
   }
@@ -1172,6 +1272,9 @@ void vtkGlobeLayer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Opacity: " << this->Opacity << "\n";
   os << indent << "Gamma: " << this->Gamma << "\n";
   os << indent << "ValidRange: " << this->ValidRange[0] << " .. " << this->ValidRange[1] << "\n";
+  os << indent << "PlausibleRange: " << this->PlausibleRange[0] << " .. " << this->PlausibleRange[1]
+     << "\n";
+  os << indent << "NumberOfImplausibleValues: " << this->NumberOfImplausibleValues << "\n";
   os << indent << "BlendMode: " << this->GetBlendModeAsString() << "\n";
   os << indent << "FeatherWidth: " << this->FeatherWidth << "\n";
   os << indent << "ProjectionQualityWeight: " << (this->ProjectionQualityWeight ? "On" : "Off")

@@ -240,6 +240,20 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Heights (after ValueScale and ValueOffset) outside [min, max] are treated as voids when
+   * the layer loads, counted in GetNumberOfImplausibleValues() and reported once with a
+   * warning naming the layer: one corrupt post (1e30, a flipped bit) must not move the
+   * globe's reference spheres and clipping planes. Unlimited by default; a globe sets it to
+   * its vtkGlobeMapper::GetPlausibleHeightRange() (derived from the body) before every
+   * update, so set the range on the mapper. Changing it reloads the layer.
+   */
+  vtkSetVector2Macro(PlausibleRange, double);
+  vtkGetVector2Macro(PlausibleRange, double);
+  vtkGetMacro(NumberOfImplausibleValues, vtkIdType);
+  ///@}
+
+  ///@{
   /// Fill the voids of a Height layer with the push-pull fill (default on).
   vtkSetMacro(FillVoids, bool);
   vtkGetMacro(FillVoids, bool);
@@ -251,7 +265,10 @@ public:
    * (re-executed upstream) or a setting that changes the data (role, scale, offset, nodata,
    * fill) was modified since the last successful load, or if the layer is not valid. Returns IsValid(). On failure reports with vtkErrorMacro
    * and keeps no data. Changes that do not touch the data (the Name) do not re-read; a
-   * file rewritten on disk under the same name is re-read after Modified().
+   * file rewritten on disk under the same name (another size or modification time) is re-read
+   * by the next Update(), Modified() or not. A failure is reported once: until the source, a
+   * setting, the file on disk or an algorithm upstream changes, Update() returns false
+   * without trying (and without reporting) again.
    */
   bool Update();
 
@@ -349,6 +366,7 @@ protected:
   bool HasNoDataValue = false;
   bool NoDataValueOverridden = false;
   bool FillVoids = true;
+  double PlausibleRange[2] = { -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
 
   // Composition settings (used by the renderer, never by the load).
   bool Enabled = true;
@@ -369,6 +387,7 @@ protected:
   int RasterHeight = 0;
   int NumberOfComponents = 0;
   vtkIdType NumberOfVoids = 0;
+  vtkIdType NumberOfImplausibleValues = 0;
   int ModelType = 0;
   int EPSG = 0;
   double DatumSemiMajorAxis = 0.0;

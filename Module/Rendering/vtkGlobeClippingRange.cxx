@@ -192,6 +192,16 @@ LocalTerrain ComputeLocalTerrain(vtkGlobeMapper* mapper, double lon, double lat,
 } // namespace
 
 //------------------------------------------------------------------------------
+double vtkGlobeClippingRange::ComputeTerrainHeight(
+  vtkGlobeMapper* mapper, double lon, double lat, bool& exact)
+{
+  const double metresPerDegree = mapper->GetEllipsoid()->GetMinimumRadius() * vtkMath::Pi() / 180.0;
+  const LocalTerrain t = ComputeLocalTerrain(mapper, lon, lat, 1.0, metresPerDegree);
+  exact = t.Exact;
+  return t.Exact ? t.Nadir : t.Top;
+}
+
+//------------------------------------------------------------------------------
 vtkGlobeClippingRange* vtkGlobeClippingRange::Install(vtkRenderer* renderer)
 {
   if (!renderer)

@@ -70,6 +70,14 @@ public:
   bool ComputeGlobeRange(vtkRenderer* renderer, vtkActor* actor, vtkGlobeMapper* mapper,
     double range[2]);
 
+  /**
+   * The composed terrain height (m) at (lon, lat) in degrees, from the layers' CPU data by the
+   * composition rules (DrawOrder, blend modes, weights), when one point decides it; otherwise
+   * (partial weights, projected layers) an upper bound: the tallest data there. `exact` says
+   * which. The same composition the near plane uses.
+   */
+  static double ComputeTerrainHeight(vtkGlobeMapper* mapper, double lon, double lat, bool& exact);
+
   ///@{
   /// The smallest near plane (m, default 0.01).
   vtkSetClampMacro(MinimumNear, double, 1e-6, 1e30);

@@ -106,6 +106,13 @@ void vtkGlobeCompositePass::Render(const vtkRenderState* s)
   const std::string key = this->GetShaderKey();
   if (this->Quad && key != this->ShaderKey)
   {
+    // VTK's shader cache keeps every program it compiled for the window's life (MiBs each on
+    // Mesa): free the GL program of a variant no longer drawn; the cache recompiles it if it
+    // comes back.
+    if (this->Quad->Program)
+    {
+      this->Quad->Program->ReleaseGraphicsResources(window);
+    }
     delete this->Quad;
     this->Quad = nullptr;
   }

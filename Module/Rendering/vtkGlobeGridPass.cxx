@@ -140,6 +140,12 @@ bool vtkGlobeGridPass::Prepare(vtkOpenGLRenderWindow* window)
   const std::string key = this->Layers->GetShaderKey(vtkGlobeLayerSet::HeightRoles);
   if (this->HeightQuad && key != this->HeightShaderKey)
   {
+    // Free the GL program of the old variant (VTK's shader cache would keep it for the
+    // window's life); the cache recompiles it if the variant comes back.
+    if (this->HeightQuad->Program)
+    {
+      this->HeightQuad->Program->ReleaseGraphicsResources(window);
+    }
     delete this->HeightQuad;
     this->HeightQuad = nullptr;
   }

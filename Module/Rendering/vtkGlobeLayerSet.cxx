@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <array>
+#include <memory>
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -35,6 +36,7 @@ struct Entry
   int Added = 0;          // insertion index: ties in DrawOrder keep it
   bool Active = false;    // loaded, valid, supported and enabled
   bool Reported = false;  // an error about this layer was reported already
+  bool Removed = false;   // removed from the set (perhaps while Update() walked it)
   bool Wraps = false;     // a global geographic layer: longitude wraps, no east/west border
   double Map[4] = { 0, 0, 0, 0 };    // geographic: west, east-west span, north, span (rad)
   // Projected layers: the projection, its globe_projection.glsl function and parameters.
@@ -72,12 +74,36 @@ constexpr int NumberOfRoles = 6;
 class vtkGlobeLayerSet::vtkInternals
 {
 public:
-  std::vector<Entry> Entries;
+  // Shared: Update() keeps the entries it walks alive while layer observers add or remove
+  // layers (a layer's ProgressEvent may call RemoveAllLayers()).
+  std::vector<std::shared_ptr<Entry>> Entries;
+  // Textures of removed layers, released when a context is at hand.
+  std::vector<vtkSmartPointer<vtkTextureObject>> Retired;
   // Active layers by role, in composition order; Index[] is the uniform index of each.
   std::array<std::vector<Entry*>, NumberOfRoles> Roles;
   int NextAdded = 0;
   double MinimumHeight = 0.0;
   double MaximumHeight = 0.0;
+
+  void Retire(Entry& e)
+  {
+    e.Removed = true;
+    e.Active = false;
+    if (e.Texture)
+    {
+      this->Retired.push_back(e.Texture);
+      e.Texture = nullptr;
+    }
+  }
+
+  void ReleaseRetired(vtkWindow* window)
+  {
+    for (auto& t : this->Retired)
+    {
+      t->ReleaseGraphicsResources(window);
+    }
+    this->Retired.clear();
+  }
 
   void ClearActive()
   {
@@ -103,9 +129,9 @@ void vtkGlobeLayerSet::AddLayer(vtkGlobeLayer* layer)
     vtkErrorMacro(<< "AddLayer: no layer given");
     return;
   }
-  Entry entry;
-  entry.Layer = layer;
-  entry.Added = this->Internals->NextAdded++;
+  auto entry = std::make_shared<Entry>();
+  entry->Layer = layer;
+  entry->Added = this->Internals->NextAdded++;
   this->Internals->Entries.push_back(entry);
   this->Modified();
 }
@@ -113,10 +139,14 @@ void vtkGlobeLayerSet::AddLayer(vtkGlobeLayer* layer)
 void vtkGlobeLayerSet::RemoveLayer(vtkGlobeLayer* layer)
 {
   auto& entries = this->Internals->Entries;
-  auto it = std::remove_if(
-    entries.begin(), entries.end(), [layer](const Entry& e) { return e.Layer == layer; });
+  auto it = std::stable_partition(entries.begin(), entries.end(),
+    [layer](const std::shared_ptr<Entry>& e) { return e->Layer != layer; });
   if (it != entries.end())
   {
+    for (auto r = it; r != entries.end(); ++r)
+    {
+      this->Internals->Retire(**r);
+    }
     entries.erase(it, entries.end());
     this->Internals->ClearActive();
     this->Modified();
@@ -125,6 +155,10 @@ void vtkGlobeLayerSet::RemoveLayer(vtkGlobeLayer* layer)
 
 void vtkGlobeLayerSet::RemoveAllLayers()
 {
+  for (auto& e : this->Internals->Entries)
+  {
+    this->Internals->Retire(*e);
+  }
   this->Internals->Entries.clear();
   this->Internals->ClearActive();
   this->Modified();
@@ -141,7 +175,7 @@ vtkGlobeLayer* vtkGlobeLayerSet::GetLayer(int index)
   {
     return nullptr;
   }
-  return this->Internals->Entries[index].Layer;
+  return this->Internals->Entries[index]->Layer;
 }
 
 //------------------------------------------------------------------------------
@@ -150,16 +184,33 @@ int vtkGlobeLayerSet::Update()
   auto& in = *this->Internals;
   in.ClearActive();
   std::vector<Entry*> order;
-  for (Entry& e : in.Entries)
+  // A copy: loading a layer runs its observers, which may add or remove layers.
+  const std::vector<std::shared_ptr<Entry>> entries = in.Entries;
+  for (const std::shared_ptr<Entry>& held : entries)
   {
-    vtkGlobeLayer* layer = e.Layer;
-    const char* name = layer->GetFileName() ? layer->GetFileName() : "(in-memory layer)";
+    Entry& e = *held;
+    if (e.Removed)
+    {
+      continue;
+    }
+    vtkSmartPointer<vtkGlobeLayer> layer = e.Layer; // alive through its own observers
+    if (layer->GetRole() == vtkGlobeLayer::Height)
+    {
+      layer->SetPlausibleRange(this->PlausibleHeightRange);
+    }
     e.Active = false;
     if (!layer->GetEnabled())
     {
       continue;
     }
-    if (!layer->Update() || !layer->IsValid())
+    const bool loaded = layer->Update() && layer->IsValid();
+    if (e.Removed)
+    {
+      continue; // an observer removed it while it loaded
+    }
+    const std::string name =
+      layer->GetFileName() ? layer->GetFileName() : std::string("(in-memory layer)");
+    if (!loaded)
     {
       // The layer reported its own error; say once that the globe goes on without it.
       if (!e.Reported)
@@ -222,6 +273,9 @@ int vtkGlobeLayerSet::Update()
     e.Border[1] = polesCovered ? 0.0 : feather / layer->GetHeight();
     order.push_back(&e);
   }
+  // Observers of later layers may have removed earlier ones.
+  order.erase(std::remove_if(order.begin(), order.end(), [](const Entry* e) { return e->Removed; }),
+    order.end());
   std::stable_sort(order.begin(), order.end(), [](const Entry* a, const Entry* b) {
     return a->Layer->GetDrawOrder() != b->Layer->GetDrawOrder()
       ? a->Layer->GetDrawOrder() < b->Layer->GetDrawOrder()
@@ -358,8 +412,10 @@ int vtkGlobeLayerSet::GetNumberOfActiveLayers(int role)
 //------------------------------------------------------------------------------
 void vtkGlobeLayerSet::UploadTextures(vtkOpenGLRenderWindow* window)
 {
-  for (Entry& e : this->Internals->Entries)
+  this->Internals->ReleaseRetired(window);
+  for (auto& held : this->Internals->Entries)
   {
+    Entry& e = *held;
     if (!e.Active)
     {
       continue;
@@ -408,8 +464,9 @@ void vtkGlobeLayerSet::UploadTextures(vtkOpenGLRenderWindow* window)
 size_t vtkGlobeLayerSet::GetTextureMemory()
 {
   size_t bytes = 0;
-  for (Entry& e : this->Internals->Entries)
+  for (auto& held : this->Internals->Entries)
   {
+    const Entry& e = *held;
     if (e.Texture && e.Texture->GetHandle())
     {
       // Mipmaps add a third.
@@ -904,8 +961,10 @@ void vtkGlobeLayerSet::UnbindTextures(int roles)
 
 void vtkGlobeLayerSet::ReleaseGraphicsResources(vtkWindow* window)
 {
-  for (Entry& e : this->Internals->Entries)
+  this->Internals->ReleaseRetired(window);
+  for (auto& held : this->Internals->Entries)
   {
+    Entry& e = *held;
     if (e.Texture)
     {
       e.Texture->ReleaseGraphicsResources(window);
@@ -921,12 +980,14 @@ void vtkGlobeLayerSet::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Layers: " << this->Internals->Entries.size() << "\n";
-  for (const Entry& e : this->Internals->Entries)
+  for (const auto& e : this->Internals->Entries)
   {
-    os << indent.GetNextIndent() << e.Layer->GetRoleAsString() << " "
-       << (e.Layer->GetFileName() ? e.Layer->GetFileName() : "(in-memory)")
-       << (e.Active ? " (active)" : " (inactive)") << "\n";
+    os << indent.GetNextIndent() << e->Layer->GetRoleAsString() << " "
+       << (e->Layer->GetFileName() ? e->Layer->GetFileName() : "(in-memory)")
+       << (e->Active ? " (active)" : " (inactive)") << "\n";
   }
+  os << indent << "PlausibleHeightRange: " << this->PlausibleHeightRange[0] << " .. "
+     << this->PlausibleHeightRange[1] << " m\n";
   os << indent << "NumberOfUploads: " << this->NumberOfUploads << "\n";
   os << indent << "HighPrecisionGeodetic: " << this->HighPrecisionGeodetic << "\n";
   os << indent << "GeodeticReference: " << vtkMath::DegreesFromRadians(this->ReferenceLonLat[0])

@@ -123,6 +123,15 @@ public:
   /// The local origin's (lon, lat) in radians.
   void GetGeodeticReference(double lonLat[2]);
 
+  ///@{
+  /**
+   * Heights outside this range (m) are voids (vtkGlobeLayer::SetPlausibleRange, given to
+   * every height layer before it updates). vtkGlobeMapper sets it from its body.
+   */
+  vtkSetVector2Macro(PlausibleHeightRange, double);
+  vtkGetVector2Macro(PlausibleHeightRange, double);
+  ///@}
+
   /// Bytes of GPU texture memory held.
   size_t GetTextureMemory();
 
@@ -136,6 +145,7 @@ protected:
   bool HighPrecisionGeodetic = true;
   double ReferenceDirection[3] = { 1.0, 0.0, 0.0 };
   double ReferenceLonLat[2] = { 0.0, 0.0 };
+  double PlausibleHeightRange[2] = { -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
 
 private:
   bool PrepareProjection(void* entry);

@@ -78,7 +78,34 @@ public:
   vtkOpenGLRenderTimer RasterTimer;
   vtkOpenGLRenderTimer ReductionTimer;
   std::string ReportedStatus;
+  std::string ReportedCamera; // the last camera diagnosis reported (once each)
   double Bounds[6] = { -1, 1, -1, 1, -1, 1 };
+  // The user's plausible height range; unset: from the body (PlausibleFraction of its
+  // smallest radius either way).
+  bool PlausibleSet = false;
+  double Plausible[2] = { 0.0, 0.0 };
+
+  void UpdateLayers()
+  {
+    double range[2];
+    this->GetPlausible(range);
+    this->Layers->SetPlausibleHeightRange(range);
+    this->Layers->Update();
+  }
+
+  void GetPlausible(double range[2])
+  {
+    if (this->PlausibleSet)
+    {
+      range[0] = this->Plausible[0];
+      range[1] = this->Plausible[1];
+      return;
+    }
+    const double h = vtkGlobeMapper::GetDefaultPlausibleFraction() *
+      this->Ellipsoid->GetMinimumRadius();
+    range[0] = -h;
+    range[1] = h;
+  }
 
   ~vtkInternals() { delete this->ReductionQuad; }
 };
@@ -118,6 +145,39 @@ void vtkGlobeMapper::SetEllipsoid(vtkGlobeEllipsoid* ellipsoid)
 vtkGlobeEllipsoid* vtkGlobeMapper::GetEllipsoid()
 {
   return this->Internals->Ellipsoid;
+}
+
+void vtkGlobeMapper::SetPlausibleHeightRange(double minimum, double maximum)
+{
+  auto& in = *this->Internals;
+  if (!(minimum < maximum) || std::isnan(minimum) || std::isnan(maximum))
+  {
+    vtkErrorMacro(<< "SetPlausibleHeightRange: the range [" << minimum << ", " << maximum
+                  << "] m is empty; the range is left as it was");
+    return;
+  }
+  if (in.PlausibleSet && in.Plausible[0] == minimum && in.Plausible[1] == maximum)
+  {
+    return;
+  }
+  in.PlausibleSet = true;
+  in.Plausible[0] = minimum;
+  in.Plausible[1] = maximum;
+  this->Modified();
+}
+
+void vtkGlobeMapper::GetPlausibleHeightRange(double range[2])
+{
+  this->Internals->GetPlausible(range);
+}
+
+void vtkGlobeMapper::UseBodyPlausibleHeightRange()
+{
+  if (this->Internals->PlausibleSet)
+  {
+    this->Internals->PlausibleSet = false;
+    this->Modified();
+  }
 }
 
 void vtkGlobeMapper::AddLayer(vtkGlobeLayer* layer)
@@ -251,7 +311,7 @@ vtkMTimeType vtkGlobeMapper::GetMTime()
 double* vtkGlobeMapper::GetBounds()
 {
   auto& in = *this->Internals;
-  in.Layers->Update();
+  in.UpdateLayers();
   const double* r = in.Ellipsoid->GetRadii();
   const double top = std::max(0.0, in.Layers->GetMaximumHeight());
   for (int i = 0; i < 3; ++i)
@@ -450,6 +510,88 @@ void vtkGlobeMapper::UpdateLight(vtkRenderer* ren, vtkActor* act)
 }
 
 //------------------------------------------------------------------------------
+void vtkGlobeMapper::DiagnoseCamera(vtkRenderer* ren, const double eyeBody[3], double minHeight,
+  std::string& key, std::string& message)
+{
+  auto& in = *this->Internals;
+  key.clear();
+  vtkCamera* camera = ren->GetActiveCamera();
+  const double* p = camera->GetPosition();
+  const double* up = camera->GetViewUp();
+  double view[3];
+  camera->GetDirectionOfProjection(view);
+  const double length = vtkMath::Norm(view);
+  if (!std::isfinite(length) || !std::isfinite(vtkMath::Norm(up)) ||
+    !std::isfinite(vtkMath::Norm(p)))
+  {
+    return; // a NaN camera: the projective grid says so
+  }
+  char text[400];
+  // A focal point at the position leaves VTK's direction of projection zero.
+  if (!(length > 0.5))
+  {
+    key = "focal";
+    std::snprintf(text, sizeof(text),
+      "The globe is not drawn: the camera's focal point equals its position (%g, %g, %g), so "
+      "the view direction is undefined; set a focal point away from the position",
+      p[0], p[1], p[2]);
+    message = text;
+    return;
+  }
+  double side[3];
+  vtkMath::Cross(view, up, side);
+  if (!(vtkMath::Norm(side) > 1e-9 * length * vtkMath::Norm(up)))
+  {
+    key = "up";
+    std::snprintf(text, sizeof(text),
+      "The globe is not drawn: the camera's view-up (%g, %g, %g) is parallel to its view "
+      "direction, so the view's orientation is undefined; set a view-up across the view (or "
+      "call OrthogonalizeViewUp() after choosing one)",
+      up[0], up[1], up[2]);
+    message = text;
+    return;
+  }
+  double llh[3];
+  if (!in.Ellipsoid->CartesianToGeodeticQuiet(eyeBody, llh))
+  {
+    return; // at the centre: the projective grid says so
+  }
+  // Below the terrain under it, or below the lowest data anywhere: inside the body.
+  bool exact = false;
+  const double ground = vtkGlobeClippingRange::ComputeTerrainHeight(this, llh[0], llh[1], exact);
+  const double depth = std::max(exact ? ground - llh[2] : -VTK_DOUBLE_MAX, minHeight - llh[2]);
+  if (depth > 0.0)
+  {
+    key = "inside";
+    std::snprintf(text, sizeof(text),
+      "The camera is inside the body, %.6g m below the terrain at (%.6f, %.6f): the globe is "
+      "seen from inside and shows little or nothing",
+      depth, llh[0], llh[1]);
+    message = text;
+    return;
+  }
+  // Smaller than a pixel: nothing to draw, however correct.
+  const double distance = vtkMath::Norm(eyeBody);
+  const double radius = in.Ellipsoid->GetMaximumRadius() + std::max(0.0, in.Layers->GetMaximumHeight());
+  int size[2] = { 1, 1 };
+  if (ren->GetRenderWindow())
+  {
+    ren->GetTiledSize(&size[0], &size[1]);
+  }
+  const double pixel = vtkMath::RadiansFromDegrees(camera->GetViewAngle()) / std::max(1, size[1]);
+  const double diameter = 2.0 * std::asin(std::min(1.0, radius / distance));
+  if (diameter < pixel)
+  {
+    key = "small";
+    std::snprintf(text, sizeof(text),
+      "The globe is smaller than a pixel from %.3g m (%.3g of a pixel across): nothing of it "
+      "is drawn",
+      distance, diameter / pixel);
+    message = text;
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
 {
   auto& in = *this->Internals;
@@ -471,7 +613,7 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   }
 
   this->CollectReduction();
-  in.Layers->Update();
+  in.UpdateLayers();
   in.Layers->UploadTextures(window);
   const double minHeight = in.Layers->GetMinimumHeight();
   const double maxHeight = in.Layers->GetMaximumHeight();
@@ -498,6 +640,23 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
       primaryHeight = std::max(minHeight, in.ReducedHeight - (0.02 * above + 1.0));
       this->PrimaryFromReduction = true;
     }
+  }
+
+  // Cameras that leave nothing of the globe to see: said once while they last.
+  std::string key, message;
+  this->DiagnoseCamera(ren, eye, minHeight, key, message);
+  if (key != in.ReportedCamera)
+  {
+    in.ReportedCamera = key;
+    if (!key.empty())
+    {
+      vtkWarningMacro(<< message);
+    }
+  }
+  if (key == "focal" || key == "up")
+  {
+    in.ReductionValid = false;
+    return;
   }
 
   if (!in.Grid->Update(camera, act->GetMatrix(), ren->GetTiledAspectRatio(), primaryHeight, maxHeight))
@@ -864,6 +1023,10 @@ void vtkGlobeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GridResolution: " << this->GetGridResolution() << "\n";
   os << indent << "Layers: " << in.Layers->GetNumberOfLayers() << "\n";
   os << indent << "HighPrecisionGeodetic: " << this->GetHighPrecisionGeodetic() << "\n";
+  double range[2];
+  in.GetPlausible(range);
+  os << indent << "PlausibleHeightRange: " << range[0] << " .. " << range[1] << " m"
+     << (in.PlausibleSet ? "" : " (from the body)") << "\n";
   os << indent << "PrimaryFromReduction: " << this->PrimaryFromReduction << "\n";
   os << indent << "LastVisibleMinimumHeight: " << this->LastVisibleMinimumHeight << "\n";
 }

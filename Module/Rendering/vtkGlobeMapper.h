@@ -26,8 +26,10 @@
  *     used by the next frame.
  * The grid resolution is independent of the window size: it is the accuracy/time dial.
  *
- * A camera at the centre of the body, at NaN, or with a parallel projection draws no globe
- * (reported once); the rest of the scene renders.
+ * A camera at the centre of the body, at NaN, with a parallel projection, with its focal point
+ * at its position or its view-up along its view draws no globe (reported once); one inside the
+ * body or so far that the body is smaller than a pixel is reported once with a warning. The
+ * rest of the scene renders.
  */
 #ifndef vtkGlobeMapper_h
 #define vtkGlobeMapper_h
@@ -58,6 +60,23 @@ public:
   /// The body (WGS84 unless set; nullptr restores WGS84).
   void SetEllipsoid(vtkGlobeEllipsoid* ellipsoid);
   vtkGlobeEllipsoid* GetEllipsoid();
+  ///@}
+
+  ///@{
+  /**
+   * Heights a layer may hold (m, after its ValueScale and ValueOffset). Posts outside are
+   * voids (vtkGlobeLayer::SetPlausibleRange), and each layer that has any says so once with
+   * its name and the count, so one corrupt value (1e30, a flipped bit) can neither blank the
+   * globe nor move its reference spheres and clipping planes. By default +-5 % of the body's
+   * smallest radius (GetDefaultPlausibleFraction()): +-317.8 km on WGS84, +-168.8 km on Mars,
+   * +-86.9 km on the Moon, beyond the relief of any of them (Everest 8.8 km, Olympus Mons
+   * 21.9 km). Set a range for small irregular bodies or exaggerated heights;
+   * UseBodyPlausibleHeightRange() goes back to the default. An empty range is an error.
+   */
+  void SetPlausibleHeightRange(double minimum, double maximum);
+  void GetPlausibleHeightRange(double range[2]);
+  void UseBodyPlausibleHeightRange();
+  static double GetDefaultPlausibleFraction() { return 0.05; }
   ///@}
 
   ///@{
@@ -175,6 +194,10 @@ protected:
   void ReduceMinimumRadius(vtkRenderer* ren, int width, int height, const double eye[3]);
   void CollectReduction();
   void UpdateLight(vtkRenderer* ren, vtkActor* act);
+  // A camera that leaves nothing of the globe to see: a key per kind ("" when fine) and the
+  // message to report once.
+  void DiagnoseCamera(vtkRenderer* ren, const double eyeBody[3], double minHeight,
+    std::string& key, std::string& message);
 
   bool PrimaryFromReduction = false;
   double LastVisibleMinimumHeight = 0.0;

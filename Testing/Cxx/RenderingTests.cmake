@@ -41,6 +41,10 @@ list(APPEND globe_rendering_tests
 # Geodetic precision (issue 5): 0.5 m data at +-180 degrees and +-80 degrees as at (0, 0).
 list(APPEND globe_rendering_tests
   TestGlobeGeodeticPrecision.cxx)
+# Reliability (issue 16): extreme heights, layers removed while loading, failures reported
+# once, cameras that see nothing reported once.
+list(APPEND globe_rendering_tests
+  TestGlobeReliability.cxx)
 
 create_test_sourcelist(_globe_rendering_driver_sources GlobeRenderingCxxTests.cxx
   ${globe_rendering_tests}

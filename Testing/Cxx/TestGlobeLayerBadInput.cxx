@@ -120,9 +120,15 @@ int TestGlobeLayerBadInput(int, char*[])
   Expect(layer->Update() && layer->GetData(), "relief_2deg.tif loads (the stale data to drop)");
   ExpectFileError(layer, observer, Temp + "/no_such_file.tif", vtkGlobeLayer::Height,
     { "does not exist" }, "a missing file: false, 'does not exist', the old data dropped");
+  // A failure is reported once: Update() does not try (or report) again until something it
+  // depended on changed; the layer's own Modified() asks for another try.
   const int loads = layer->GetNumberOfLoads();
+  observer->Clear();
+  Expect(!layer->Update() && !observer->GetError() && layer->GetNumberOfLoads() == loads,
+    "Update() after a failure, nothing changed: false, no new attempt and no new report");
+  layer->Modified();
   Expect(!layer->Update() && observer->GetError() && layer->GetNumberOfLoads() == loads + 1,
-    "Update() after a failure tries again (the file may have appeared)");
+    "after Modified(): tried (and reported) again");
   observer->Clear();
   ExpectFileError(layer, observer, Temp, vtkGlobeLayer::Height, { "not a regular file" },
     "a directory: 'not a regular file'");
