@@ -7,6 +7,9 @@
 #   Utilities/globe.sh bench [args]   build, then run the benchmark (table + build/benchmark.json)
 #                                     and plot it (Documentation/accuracy-vs-time.md, images/)
 #   Utilities/globe.sh build          install packages and build only
+#   Utilities/globe.sh prepare IN OUT [--tile N] [--no-compression]
+#                                     build, then rewrite a georeferenced raster as a tiled
+#                                     GeoTIFF with reduced-resolution levels (GlobePrepare)
 #   Utilities/globe.sh python script.py [args]   build, then run a Python script with the
 #                                     build's vtkglobe package, under Xvfb when there is no display
 #
@@ -112,6 +115,12 @@ case "$command" in
     install_packages
     build_project
     ;;
+  prepare)
+    install_packages
+    build_project
+    echo "== preparing (GlobePrepare $*)"
+    "$build/bin/GlobePrepare" "$@"
+    ;;
   python)
     install_packages >&2
     build_project >&2
@@ -120,7 +129,7 @@ case "$command" in
       /usr/bin/python3 "$@"
     ;;
   *)
-    echo "usage: $0 demo|test|bench|build|python [args]" >&2
+    echo "usage: $0 demo|test|bench|build|prepare|python [args]" >&2
     exit 2
     ;;
 esac

@@ -14,7 +14,8 @@ set(globe_core_tests
   TestGlobeRasterReaderHardening.cxx
   TestGlobeLayerInput.cxx
   TestGlobeMapProjection.cxx
-  TestGlobeMapProjectionShader.cxx)
+  TestGlobeMapProjectionShader.cxx
+  TestGlobePageSource.cxx)
 
 create_test_sourcelist(_globe_core_driver_sources GlobeCoreCxxTests.cxx ${globe_core_tests})
 add_executable(GlobeCoreCxxTests ${_globe_core_driver_sources})
