@@ -766,6 +766,15 @@ bool vtkGlobeLayer::Update()
     return executive->GetPipelineMTime();
   };
   now.UpstreamTime = upstreamTime();
+  // What a failed attempt depended on; InputTime is left out: a failed run leaves no new data
+  // to compare, and the upstream time is taken after the attempt's own Modified().
+  const auto recordFailure = [&]() {
+    in.LastFailure = now;
+    in.LastFailure.InputData = nullptr;
+    in.LastFailure.InputTime = 0;
+    in.LastFailure.UpstreamTime = upstreamTime();
+    in.FailureMTime = this->GetMTime();
+  };
   // A failure is reported once: nothing is tried again until something it depended on
   // changed (the source, a setting, the file on disk, an algorithm upstream).
   if (!this->Valid && in.LastFailure.Loaded && now == in.LastFailure &&
@@ -780,8 +789,7 @@ bool vtkGlobeLayer::Update()
     this->Invalidate();
     vtkErrorMacro(<< "Nothing to load: no FileName is set, no input is connected and no "
                      "in-memory data was given");
-    in.LastFailure = now;
-    in.FailureMTime = this->GetMTime();
+    recordFailure();
     return false;
   }
   if (in.Source == vtkInternals::File &&
@@ -790,7 +798,6 @@ bool vtkGlobeLayer::Update()
   {
     // A file rewritten in place, or one that failed and changed since, is read again.
     in.Reader->Modified();
-    now.UpstreamTime = upstreamTime();
   }
 
   // Bring the input up to date: upstream algorithms re-execute only when they, or what they
@@ -839,12 +846,7 @@ bool vtkGlobeLayer::Update()
   if (!ok)
   {
     this->Invalidate();
-    // InputTime is left out: a failed upstream run leaves no new data to compare.
-    in.LastFailure = now;
-    in.LastFailure.InputData = nullptr;
-    in.LastFailure.InputTime = 0;
-    in.LastFailure.UpstreamTime = upstreamTime(); // after this attempt's own Modified()
-    in.FailureMTime = this->GetMTime();
+    recordFailure();
     return false;
   }
   this->Valid = true;

@@ -8,6 +8,7 @@
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkGlobeRasterReader.h"
+#include "vtkGlobeRasterSamples.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkNew.h"
@@ -17,18 +18,12 @@
 
 #include <OpenImageIO/imagecache.h>
 
-#include <geotiff.h>
-#include <tiffio.h>
-#include <xtiffio.h>
-
 #include <algorithm>
 #include <array>
 #include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -44,148 +39,6 @@ constexpr float NaNf = std::numeric_limits<float>::quiet_NaN();
 // The largest coarsest file level that synthesised levels are averaged from (texels).
 constexpr double MaxSynthesisTexels = 4096.0 * 4096.0;
 
-#if defined(TIFFLIB_VERSION) && TIFFLIB_VERSION >= 20221213
-int IgnoreTIFFMessage(TIFF*, void*, const char*, const char*, va_list)
-{
-  return 1; // the reader already reports what is wrong with the file
-}
-#endif
-
-/// True when the file starts like a (Big)TIFF.
-bool LooksLikeTIFF(const std::string& file)
-{
-  std::ifstream in(file, std::ios::binary);
-  unsigned char m[4] = { 0, 0, 0, 0 };
-  in.read(reinterpret_cast<char*>(m), 4);
-  return in && ((m[0] == 'I' && m[1] == 'I' && (m[2] == 42 || m[2] == 43) && m[3] == 0) ||
-                 (m[0] == 'M' && m[1] == 'M' && m[2] == 0 && (m[3] == 42 || m[3] == 43)));
-}
-
-/**
- * How the file's rows and columns run, by the same sources vtkGlobeRasterReader uses: the
- * GeoTIFF tags (ModelPixelScale, else ModelTransformation), else the world file. The reader
- * brings its output north-up, west-to-east; ImageCache pixels are in file order.
- */
-void FileOrientation(const std::string& file, bool& flipRows, bool& flipColumns)
-{
-  flipRows = flipColumns = false;
-  if (LooksLikeTIFF(file))
-  {
-    XTIFFInitialize();
-#if defined(TIFFLIB_VERSION) && TIFFLIB_VERSION >= 20221213
-    TIFFOpenOptions* options = TIFFOpenOptionsAlloc();
-    TIFFOpenOptionsSetErrorHandlerExtR(options, IgnoreTIFFMessage, nullptr);
-    TIFFOpenOptionsSetWarningHandlerExtR(options, IgnoreTIFFMessage, nullptr);
-    TIFF* tif = TIFFOpenExt(file.c_str(), "r", options);
-    TIFFOpenOptionsFree(options);
-#else
-    TIFF* tif = XTIFFOpen(file.c_str(), "r");
-#endif
-    if (tif)
-    {
-      uint16_t count = 0;
-      double* values = nullptr;
-      bool found = false;
-      if (TIFFGetField(tif, TIFFTAG_GEOPIXELSCALE, &count, &values) && count >= 2 &&
-        TIFFGetField(tif, TIFFTAG_GEOTIEPOINTS, &count, &values) && count >= 6)
-      {
-        TIFFGetField(tif, TIFFTAG_GEOPIXELSCALE, &count, &values);
-        flipColumns = values[0] < 0.0;
-        flipRows = values[1] < 0.0; // y = tie - row * scale: a negative scale is south-up
-        found = true;
-      }
-      else if (TIFFGetField(tif, TIFFTAG_GEOTRANSMATRIX, &count, &values) && count >= 16)
-      {
-        flipColumns = values[0] < 0.0;
-        flipRows = values[5] > 0.0;
-        found = true;
-      }
-      XTIFFClose(tif);
-      if (found)
-      {
-        return;
-      }
-    }
-  }
-  // A world file: name.tfw / name.tifw / name.wld (as given, lower or upper case).
-  const std::filesystem::path path(file);
-  const std::string ext = path.extension().string();
-  std::vector<std::string> exts;
-  if (ext.size() >= 3)
-  {
-    exts.push_back(std::string(".") + ext[1] + ext.back() + "w");
-    exts.push_back(ext + "w");
-  }
-  exts.push_back(".wld");
-  for (const std::string& e : exts)
-  {
-    std::string lower = e, upper = e;
-    std::transform(lower.begin(), lower.end(), lower.begin(), ::tolower);
-    std::transform(upper.begin(), upper.end(), upper.begin(), ::toupper);
-    for (const std::string& candidateExt : { e, lower, upper })
-    {
-      std::filesystem::path candidate = path;
-      candidate.replace_extension(candidateExt);
-      std::ifstream in(candidate);
-      double v[6];
-      if (in && (in >> v[0] >> v[1] >> v[2] >> v[3] >> v[4] >> v[5]))
-      {
-        flipColumns = v[0] < 0.0;
-        flipRows = v[3] > 0.0;
-        return;
-      }
-    }
-  }
-}
-
-/// One sample of OpenImageIO type `type` at p, as double (native values, no normalising).
-inline double NativeSample(const unsigned char* p, OIIO::TypeDesc::BASETYPE type)
-{
-  switch (type)
-  {
-    case OIIO::TypeDesc::UINT8:
-      return *p;
-    case OIIO::TypeDesc::INT8:
-      return *reinterpret_cast<const int8_t*>(p);
-    case OIIO::TypeDesc::UINT16:
-    {
-      uint16_t v;
-      std::memcpy(&v, p, 2);
-      return v;
-    }
-    case OIIO::TypeDesc::INT16:
-    {
-      int16_t v;
-      std::memcpy(&v, p, 2);
-      return v;
-    }
-    case OIIO::TypeDesc::UINT32:
-    {
-      uint32_t v;
-      std::memcpy(&v, p, 4);
-      return v;
-    }
-    case OIIO::TypeDesc::INT32:
-    {
-      int32_t v;
-      std::memcpy(&v, p, 4);
-      return v;
-    }
-    case OIIO::TypeDesc::FLOAT:
-    {
-      float v;
-      std::memcpy(&v, p, 4);
-      return v;
-    }
-    default:
-    {
-      double v;
-      std::memcpy(&v, p, 8);
-      return v;
-    }
-  }
-}
-
 /// Everything an opened source knows. Immutable once built, shared with running reads.
 struct State
 {
@@ -196,6 +49,7 @@ struct State
   int Height = 0;
   int FileChannels = 1;
   bool Heights = true;
+  int ScalarType = VTK_UNSIGNED_CHAR; // of the samples read (heights: the file's own)
   OIIO::TypeDesc ReadType;
   int ModelType = 0;
   int EPSG = 0;
@@ -223,7 +77,7 @@ struct State
     {
       if (this->Heights)
       {
-        const double v = NativeSample(in, static_cast<OIIO::TypeDesc::BASETYPE>(this->ReadType.basetype));
+        const double v = vtkGlobeRasterSamples::ToDouble(in, this->ScalarType);
         heights[i] = (std::isnan(v) || (this->HasNoData && v == this->NoData))
           ? NaNf
           : static_cast<float>(v);
@@ -368,7 +222,8 @@ std::string Build(const std::string& file, int pageSize, int border, double cach
   s.NoData = s.HasNoData ? number(vtkGlobeRasterReader::GetNoDataValueArrayName(), 0) : 0.0;
   s.Global = s.ModelType == vtkGlobeRasterReader::Geographic &&
     s.Width * s.Geo[2] >= 360.0 - 1e-7; // vtkGlobeLayer::IsGlobal's rule
-  FileOrientation(file, s.FlipRows, s.FlipColumns);
+  s.FlipColumns = number(vtkGlobeRasterReader::GetStorageOrientationArrayName(), 0) == 1;
+  s.FlipRows = number(vtkGlobeRasterReader::GetStorageOrientationArrayName(), 1) == 1;
 
   // A private ImageCache: its own memory limit and statistics.
   s.Cache = std::shared_ptr<OIIO::ImageCache>(
@@ -397,25 +252,13 @@ std::string Build(const std::string& file, int pageSize, int border, double cach
   s.Heights = spec.nchannels == 1;
   if (s.Heights)
   {
-    // Native samples: OpenImageIO's conversion to float would normalise integers.
-    switch (spec.format.basetype)
+    // Native samples, as vtkGlobeRasterReader reads them.
+    s.ScalarType = vtkGlobeRasterSamples::ScalarTypeOf(spec.format);
+    if (s.ScalarType == 0)
     {
-      case OIIO::TypeDesc::UINT8:
-      case OIIO::TypeDesc::INT8:
-      case OIIO::TypeDesc::UINT16:
-      case OIIO::TypeDesc::INT16:
-      case OIIO::TypeDesc::UINT32:
-      case OIIO::TypeDesc::INT32:
-      case OIIO::TypeDesc::FLOAT:
-      case OIIO::TypeDesc::DOUBLE:
-        s.ReadType = spec.format;
-        break;
-      case OIIO::TypeDesc::HALF:
-        s.ReadType = OIIO::TypeDesc::FLOAT; // widened exactly
-        break;
-      default:
-        return std::string("its sample type (") + spec.format.c_str() + ") is not supported";
+      return std::string("its sample type (") + spec.format.c_str() + ") is not supported";
     }
+    s.ReadType = vtkGlobeRasterSamples::ReadTypeOf(s.ScalarType);
   }
   else
   {

@@ -7,6 +7,7 @@
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkGlobeRasterReader.h"
+#include "vtkGlobeRasterSamples.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -80,55 +81,6 @@ bool SampleFormatOf(int vtkType, SampleFormat& f)
       return true;
     default:
       return false;
-  }
-}
-
-/// One sample of VTK type `type` at p, as double.
-inline double GetSample(const unsigned char* p, int type)
-{
-  switch (type)
-  {
-    case VTK_UNSIGNED_CHAR:
-      return *p;
-    case VTK_SIGNED_CHAR:
-    case VTK_CHAR:
-      return *reinterpret_cast<const signed char*>(p);
-    case VTK_UNSIGNED_SHORT:
-    {
-      uint16_t v;
-      std::memcpy(&v, p, 2);
-      return v;
-    }
-    case VTK_SHORT:
-    {
-      int16_t v;
-      std::memcpy(&v, p, 2);
-      return v;
-    }
-    case VTK_UNSIGNED_INT:
-    {
-      uint32_t v;
-      std::memcpy(&v, p, 4);
-      return v;
-    }
-    case VTK_INT:
-    {
-      int32_t v;
-      std::memcpy(&v, p, 4);
-      return v;
-    }
-    case VTK_FLOAT:
-    {
-      float v;
-      std::memcpy(&v, p, 4);
-      return v;
-    }
-    default:
-    {
-      double v;
-      std::memcpy(&v, p, 8);
-      return v;
-    }
   }
 }
 
@@ -520,7 +472,7 @@ bool vtkGlobeRasterPreparer::Write()
     values.resize(n);
     for (size_t i = 0; i < n; ++i)
     {
-      values[i] = GetSample(bytes + i * sampleBytes, layout.ScalarType);
+      values[i] = vtkGlobeRasterSamples::ToDouble(bytes + i * sampleBytes, layout.ScalarType);
     }
     const bool single = level.Height == 1; // a 1-row level pairs its row with itself
     if (!single && r % 2 == 0)

@@ -1,4 +1,5 @@
 #include "vtkGlobeRasterReader.h"
+#include "vtkGlobeRasterSamples.h"
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -1083,56 +1084,6 @@ std::string BoxText(const double box[4])
   return text;
 }
 
-/// The VTK scalar type a 1-channel raster of `format` is read as; 0 when unsupported.
-int ScalarTypeOf(OIIO::TypeDesc format)
-{
-  switch (format.basetype)
-  {
-    case OIIO::TypeDesc::UINT8:
-      return VTK_UNSIGNED_CHAR;
-    case OIIO::TypeDesc::INT8:
-      return VTK_SIGNED_CHAR;
-    case OIIO::TypeDesc::UINT16:
-      return VTK_UNSIGNED_SHORT;
-    case OIIO::TypeDesc::INT16:
-      return VTK_SHORT;
-    case OIIO::TypeDesc::UINT32:
-      return VTK_UNSIGNED_INT;
-    case OIIO::TypeDesc::INT32:
-      return VTK_INT;
-    case OIIO::TypeDesc::HALF: // widened exactly, never rescaled
-    case OIIO::TypeDesc::FLOAT:
-      return VTK_FLOAT;
-    case OIIO::TypeDesc::DOUBLE:
-      return VTK_DOUBLE;
-    default:
-      return 0;
-  }
-}
-
-OIIO::TypeDesc ReadTypeOf(int scalarType)
-{
-  switch (scalarType)
-  {
-    case VTK_UNSIGNED_CHAR:
-      return OIIO::TypeDesc::UINT8;
-    case VTK_SIGNED_CHAR:
-      return OIIO::TypeDesc::INT8;
-    case VTK_UNSIGNED_SHORT:
-      return OIIO::TypeDesc::UINT16;
-    case VTK_SHORT:
-      return OIIO::TypeDesc::INT16;
-    case VTK_UNSIGNED_INT:
-      return OIIO::TypeDesc::UINT32;
-    case VTK_INT:
-      return OIIO::TypeDesc::INT32;
-    case VTK_FLOAT:
-      return OIIO::TypeDesc::FLOAT;
-    default:
-      return OIIO::TypeDesc::DOUBLE;
-  }
-}
-
 /// Opens an image for reading pixels; straight alpha is kept as stored (OpenImageIO would
 /// premultiply unassociated alpha by default).
 std::unique_ptr<OIIO::ImageInput> OpenImage(const std::string& file)
@@ -1269,7 +1220,7 @@ int vtkGlobeRasterReader::RequestInformation(
     {
       // Integer rasters in their native type: OpenImageIO's float conversion would
       // normalise them to [-1, 1].
-      scalarType = ScalarTypeOf(spec.format);
+      scalarType = vtkGlobeRasterSamples::ScalarTypeOf(spec.format);
       if (scalarType == 0)
       {
         return this->Fail(vtkErrorCode::FileFormatError,
@@ -1595,7 +1546,7 @@ int vtkGlobeRasterReader::RequestData(
     int chunk = std::max((r1 - r0 + 19) / 20, 1);
     chunk = (chunk + align - 1) / align * align;
     const OIIO::TypeDesc type =
-      in.Channels == 1 ? ReadTypeOf(in.ScalarType) : OIIO::TypeDesc(OIIO::TypeDesc::UINT8);
+      in.Channels == 1 ? vtkGlobeRasterSamples::ReadTypeOf(in.ScalarType) : OIIO::TypeDesc(OIIO::TypeDesc::UINT8);
     const size_t pixelBytes = type.size() * static_cast<size_t>(in.Channels);
     const size_t rowBytes = pixelBytes * static_cast<size_t>(in.Width);
     const int outWidth = ue[1] - ue[0] + 1;
@@ -1754,6 +1705,14 @@ int vtkGlobeRasterReader::RequestData(
   }
   addString(GetFileNameArrayName(), file);
   addString(GetGeoreferenceSourceArrayName(), geo.Source);
+  {
+    // For readers of the file's own pixels (vtkGlobePageSource reads it through a cache).
+    vtkNew<vtkIntArray> a;
+    a->SetName(GetStorageOrientationArrayName());
+    a->InsertNextValue(in.FlipColumns ? 1 : 0);
+    a->InsertNextValue(in.FlipRows ? 0 : 1);
+    fd->AddArray(a);
+  }
   return 1;
 }
 

@@ -32,6 +32,9 @@
  * - GlobeFileName (string, 1): the file read.
  * - GlobeGeoreferenceSource (string, 1): where the georeferencing came from ("GeoTIFF",
  *   "world file + .prj", "world file + SetEPSG", "world file, assumed WGS 84").
+ * - GlobeStorageOrientation (int, 2): how the FILE stores its pixels, for code that reads
+ *   them directly: 1 when its columns run east to west, 1 when its rows run south to north
+ *   (0, 0 for the usual north-up file).
  *
  * RequestInformation reads headers only (image header, GeoTIFF tags, world and .prj files)
  * and sets WHOLE_EXTENT, ORIGIN, SPACING and the scalar type and components. RequestData
@@ -117,6 +120,7 @@ public:
   static const char* GetDatumSemiAxesArrayName() { return "GlobeDatumSemiAxes"; }
   static const char* GetFileNameArrayName() { return "GlobeFileName"; }
   static const char* GetGeoreferenceSourceArrayName() { return "GlobeGeoreferenceSource"; }
+  static const char* GetStorageOrientationArrayName() { return "GlobeStorageOrientation"; }
   ///@}
 
 protected:

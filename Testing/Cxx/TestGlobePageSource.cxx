@@ -62,8 +62,12 @@ const std::string Data = VTKGLOBE_DATA_DIR;
 constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
 
 /// A float height GeoTIFF (strips, uncompressed), geographic EPSG:4326, north-up.
+/// A 1-channel float GeoTIFF; value(r, c) is stored at file row r, column c. Stored north-up
+/// and west-to-east unless southUp / eastToWest (the tie point then names the south / east
+/// edge and the pixel scale is negative).
 bool WriteFloatGeoTIFF(const std::string& path, int w, int h, double west, double north,
-  double pixel, const char* noData, const std::function<float(int, int)>& value)
+  double pixel, const char* noData, const std::function<float(int, int)>& value,
+  bool southUp = false, bool eastToWest = false)
 {
   TIFF* tif = XTIFFOpen(path.c_str(), "w");
   if (!tif)
@@ -86,8 +90,9 @@ bool WriteFloatGeoTIFF(const std::string& path, int w, int h, double west, doubl
   TIFFSetField(tif, TIFFTAG_ROWSPERSTRIP, 16);
   if (pixel > 0)
   {
-    const double tie[6] = { 0, 0, 0, west, north, 0 };
-    const double scale[3] = { pixel, pixel, 0 };
+    const double tie[6] = { 0, 0, 0, eastToWest ? west + w * pixel : west,
+      southUp ? north - h * pixel : north, 0 };
+    const double scale[3] = { eastToWest ? -pixel : pixel, southUp ? -pixel : pixel, 0 };
     TIFFSetField(tif, TIFFTAG_GEOTIEPOINTS, 6, tie);
     TIFFSetField(tif, TIFFTAG_GEOPIXELSCALE, 3, scale);
     GTIF* gtif = GTIFNew(tif);
@@ -131,6 +136,22 @@ struct Grid
   std::vector<double> V;
   double At(int r, int c) const { return V[static_cast<size_t>(r) * W + c]; }
 };
+
+/// A w x h grid, row 0 north, of value(r, c).
+Grid MakeGrid(int w, int h, const std::function<double(int, int)>& value)
+{
+  Grid g;
+  g.W = w;
+  g.H = h;
+  for (int r = 0; r < h; ++r)
+  {
+    for (int c = 0; c < w; ++c)
+    {
+      g.V.push_back(value(r, c));
+    }
+  }
+  return g;
+}
 
 /// The nodata-aware 2 x 2 average (OpenImageIO's MIP sizes), each result rounded to float as
 /// the file stores it.
@@ -419,16 +440,7 @@ int TestGlobePageSource(int, char*[])
     source->SetFileName(out.c_str());
     source->SetPageSize(64);
     source->SetBorder(1);
-    Grid g0;
-    g0.W = 1000;
-    g0.H = 600;
-    for (int r = 0; r < 600; ++r)
-    {
-      for (int c = 0; c < 1000; ++c)
-      {
-        g0.V.push_back(r * 1000 + c);
-      }
-    }
+    const Grid g0 = MakeGrid(1000, 600, [](int r, int c) { return r * 1000 + c; });
     long texels = 0;
     std::string where;
     const long wrong = CheckPyramid(source, { g0 }, false, &texels, where);
@@ -487,16 +499,7 @@ int TestGlobePageSource(int, char*[])
     vtkNew<vtkGlobePageSource> source;
     source->SetFileName(out.c_str());
     source->SetPageSize(64);
-    Grid g0;
-    g0.W = 720;
-    g0.H = 360;
-    for (int r = 0; r < 360; ++r)
-    {
-      for (int c = 0; c < 720; ++c)
-      {
-        g0.V.push_back(r * 720 + c);
-      }
-    }
+    const Grid g0 = MakeGrid(720, 360, [](int r, int c) { return r * 720 + c; });
     long texels = 0;
     std::string where;
     const long wrong = CheckPyramid(source, { g0 }, true, &texels, where);
@@ -663,6 +666,32 @@ int TestGlobePageSource(int, char*[])
     Expect(source->GetNumberOfLevels() == 3 && source->GetNumberOfFileLevels() == 3 &&
         size1[0] == 90 && size1[1] == 45 && size2[0] == 45 && size2[1] == 22,
       "automip levels: 180x90, 90x45, 45x22 (max(1, n/2))");
+  }
+
+  // 4b. Files stored south-up and east-to-west, read without preparing: pages come north-up,
+  // west-to-east (the orientation from the reader's GlobeStorageOrientation).
+  for (int flips = 1; flips < 4; ++flips)
+  {
+    const bool southUp = flips & 1, eastToWest = flips & 2;
+    std::printf("plain 256 x 128 ramp stored%s%s\n", southUp ? " south-up" : "",
+      eastToWest ? " east-to-west" : "");
+    const std::string in = Temp + "/pages_flipped_" + std::to_string(flips) + ".tif";
+    Expect(WriteFloatGeoTIFF(in, 256, 128, 20.0, 10.0, 0.01, nullptr,
+             [](int r, int c) { return static_cast<float>(r * 256 + c); }, southUp, eastToWest),
+      "input written");
+    vtkNew<vtkGlobePageSource> source;
+    source->SetFileName(in.c_str());
+    source->SetPageSize(64);
+    // North row j, west column i is the file's row (127 - j) / column (255 - i) where flipped.
+    const Grid g0 = MakeGrid(256, 128, [southUp, eastToWest](int r, int c) {
+      return (southUp ? 127 - r : r) * 256 + (eastToWest ? 255 - c : c);
+    });
+    long texels = 0;
+    std::string where;
+    const long wrong = CheckPyramid(source, { g0 }, false, &texels, where);
+    Expect(wrong == 0 && source->GetNumberOfLevels() == 3,
+      "every texel of 3 levels north-up and west-to-east (" + std::to_string(texels) +
+        " texels, " + std::to_string(wrong) + " wrong) " + where);
   }
 
   // 5. Colour: a tiled RGB file without levels (levels averaged in memory), and prepared.
