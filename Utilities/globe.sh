@@ -6,6 +6,10 @@
 #   Utilities/globe.sh test [args]    build, then run the whole test suite (ctest args pass on)
 #   Utilities/globe.sh bench [args]   build, then run the benchmark (table + build/benchmark.json)
 #                                     and plot it (Documentation/accuracy-vs-time.md, images/)
+#   Utilities/globe.sh bench-streaming [args]   build, make the global rasters of the
+#                                     streaming flight (GlobeMakePlanet, widths from
+#                                     VTKGLOBE_PLANET_WIDTHS, kept in VTKGLOBE_PLANET_DIR), fly them
+#                                     (build/streaming.json) and plot (Documentation/images)
 #   Utilities/globe.sh build          install packages and build only
 #   Utilities/globe.sh prepare IN OUT [--tile N] [--no-compression]
 #                                     build, then rewrite a georeferenced raster as a tiled
@@ -111,6 +115,26 @@ case "$command" in
       /usr/bin/python3 "$root/Utilities/plot_benchmark.py" "$build/benchmark.json" \
       --images "$images" "${report[@]}"
     ;;
+  bench-streaming)
+    install_packages
+    build_project
+    planet="${VTKGLOBE_PLANET_DIR:-$build/planet}"
+    planets=()
+    for w in ${VTKGLOBE_PLANET_WIDTHS:-2048 8192 21600 43200}; do
+      if [ ! -f "$planet/planet_imagery_$w.tif" ]; then
+        echo "== making the ${w}-wide global rasters (GlobeMakePlanet)"
+        "$build/bin/GlobeMakePlanet" "$root/Data" "$planet" --width "$w"
+      fi
+      planets+=(--planet "$w:$planet/planet_heights_$w.tif:$planet/planet_imagery_$w.tif")
+    done
+    echo "== flying (GlobeStreamingBenchmark; glibc malloc tuned: see the developers' notes)"
+    with_display env \
+      GLIBC_TUNABLES=glibc.malloc.mmap_threshold=268435456:glibc.malloc.trim_threshold=536870912 \
+      "$build/bin/GlobeStreamingBenchmark" --data "$root/Data" "${planets[@]}" \
+      --json "$build/streaming.json" "$@"
+    with_display env PYTHONPATH="$build/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}" \
+      /usr/bin/python3 "$root/Utilities/plot_streaming.py" "$build/streaming.json"
+    ;;
   build)
     install_packages
     build_project
@@ -129,7 +153,7 @@ case "$command" in
       /usr/bin/python3 "$@"
     ;;
   *)
-    echo "usage: $0 demo|test|bench|build|prepare|python [args]" >&2
+    echo "usage: $0 demo|test|bench|bench-streaming|build|prepare|python [args]" >&2
     exit 2
     ;;
 esac

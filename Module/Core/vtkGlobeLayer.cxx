@@ -7,6 +7,7 @@
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
+#include "vtkGlobePageSource.h"
 #include "vtkGlobeRasterReader.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -27,6 +28,7 @@
 #include <cstring>
 #include <filesystem>
 #include <limits>
+#include <mutex>
 #include <new>
 #include <string>
 #include <type_traits>
@@ -463,6 +465,7 @@ public:
     bool FillVoids = true;
     double PlausibleMinimum = -VTK_DOUBLE_MAX;
     double PlausibleMaximum = VTK_DOUBLE_MAX;
+    bool Streamed = false;
 
     bool operator==(const Settings& o) const
     {
@@ -473,7 +476,8 @@ public:
         this->ValueOffset == o.ValueOffset && this->NoDataOverridden == o.NoDataOverridden &&
         this->HasNoData == o.HasNoData && SameDouble(this->NoData, o.NoData) &&
         this->FillVoids == o.FillVoids && this->PlausibleMinimum == o.PlausibleMinimum &&
-        this->PlausibleMaximum == o.PlausibleMaximum && this->UpstreamTime == o.UpstreamTime;
+        this->PlausibleMaximum == o.PlausibleMaximum && this->UpstreamTime == o.UpstreamTime &&
+        this->Streamed == o.Streamed;
     }
   };
 
@@ -488,6 +492,23 @@ public:
   vtkNew<vtkGlobeLayerInput> Sink;
   vtkNew<vtkGlobeRasterReader> Reader; // for FileName
   int MemoryRole = Height;
+
+  // Streaming: the page source, and the value settings its pages get (a copy taken at
+  // load, so worker threads never read the layer's own members).
+  vtkNew<vtkGlobePageSource> Pages;
+  bool Streamed = false;
+  struct PageValues
+  {
+    double Scale = 1.0;
+    double Offset = 0.0;
+    double Minimum = -VTK_DOUBLE_MAX;
+    double Maximum = VTK_DOUBLE_MAX;
+    bool OverriddenNoData = false;
+    double NoData = 0.0;
+    bool Fill = true;
+  };
+  PageValues Values;
+  std::mutex ValuesMutex;
 
   // Results.
   vtkSmartPointer<vtkDataArray> Data;
@@ -714,6 +735,7 @@ void vtkGlobeLayer::Invalidate()
   vtkInternals& in = *this->Internals;
   this->Valid = false;
   in.Data = nullptr;
+  in.Streamed = false;
   this->RasterWidth = this->RasterHeight = this->NumberOfComponents = 0;
   this->NumberOfVoids = 0;
   this->NumberOfImplausibleValues = 0;
@@ -799,6 +821,47 @@ bool vtkGlobeLayer::Update()
     // A file rewritten in place, or one that failed and changed since, is read again.
     in.Reader->Modified();
   }
+  if (in.Source == vtkInternals::File && this->Streaming != StreamingOff)
+  {
+    now.Streamed = this->Streaming == StreamingOn;
+    if (!now.Streamed && (in.Reader->UpdateInformation(), !*in.Reader->GetLastError()))
+    {
+      // Auto: the header's size decides (a bad header fails in the whole-raster path below).
+      int whole[6];
+      in.Reader->GetOutputInformation(0)->Get(
+        vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
+      now.Streamed = whole[1] - whole[0] + 1 > this->StreamingThreshold ||
+        whole[3] - whole[2] + 1 > this->StreamingThreshold;
+    }
+  }
+  if (now.Streamed)
+  {
+    if (this->Valid && now == in.LastLoad)
+    {
+      return true;
+    }
+    ++this->NumberOfLoads;
+    this->Invalidate();
+    bool ok = false;
+    try
+    {
+      ok = this->LoadStreamed();
+    }
+    catch (const std::exception& e)
+    {
+      vtkErrorMacro(<< "Cannot load " << this->DescribeSource() << ": " << e.what());
+    }
+    if (!ok)
+    {
+      this->Invalidate();
+      recordFailure();
+      return false;
+    }
+    this->Valid = true;
+    in.Streamed = true;
+    in.LastLoad = now;
+    return true;
+  }
 
   // Bring the input up to date: upstream algorithms re-execute only when they, or what they
   // depend on, were modified since they last ran.
@@ -857,6 +920,200 @@ bool vtkGlobeLayer::Update()
 }
 
 //------------------------------------------------------------------------------------------
+bool vtkGlobeLayer::LoadStreamed()
+{
+  vtkInternals& in = *this->Internals;
+  const std::string what = this->DescribeSource();
+  // The header and the north row give the georeferencing; the values come page by page.
+  in.Reader->UpdateInformation();
+  if (*in.Reader->GetLastError())
+  {
+    this->ReportInputFailure();
+    return false;
+  }
+  int whole[6];
+  in.Reader->GetOutputInformation(0)->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
+  const int rows = whole[3] - whole[2] + 1;
+  int north[6] = { whole[0], whole[1], whole[3], whole[3], whole[4], whole[4] };
+  if (rows <= 0 || !in.Reader->UpdateExtent(north) || *in.Reader->GetLastError())
+  {
+    this->ReportInputFailure();
+    return false;
+  }
+  if (!this->Load(in.Reader->GetOutput(), rows))
+  {
+    return false;
+  }
+  vtkGlobePageSource* pages = in.Pages;
+  pages->SetFileName(this->FileName);
+  const int levels = pages->GetNumberOfLevels(); // opens the file (errors name it)
+  if (levels <= 0)
+  {
+    vtkErrorMacro(<< "Cannot load " << what << " as a streamed layer: its pages cannot be read");
+    return false;
+  }
+  if (pages->GetWidth() != this->RasterWidth || pages->GetHeight() != this->RasterHeight)
+  {
+    vtkErrorMacro(<< "Cannot load " << what << " as a streamed layer: the page source reads "
+                  << pages->GetWidth() << " x " << pages->GetHeight() << " texels, the header "
+                  << this->RasterWidth << " x " << this->RasterHeight);
+    return false;
+  }
+  if ((pages->GetNumberOfComponents() == 1) != (this->Role == Height))
+  {
+    vtkErrorMacro(<< "Cannot load " << what << " as a streamed " << this->GetRoleAsString()
+                  << " layer: it has " << pages->GetNumberOfComponents() << " channel(s); "
+                  << "streamed heights need 1, streamed images 3 or 4 (set Streaming to Off)");
+    return false;
+  }
+  {
+    std::lock_guard<std::mutex> lock(in.ValuesMutex);
+    in.Values.Scale = this->ValueScale;
+    in.Values.Offset = this->ValueOffset;
+    in.Values.Minimum = this->PlausibleRange[0];
+    in.Values.Maximum = this->PlausibleRange[1];
+    in.Values.OverriddenNoData = this->NoDataValueOverridden && this->HasNoDataValue;
+    in.Values.NoData = this->NoDataValue;
+    in.Values.Fill = this->FillVoids;
+  }
+  in.Streamed = true; // ReadPage below needs it
+  // The coarsest level is one page: its range bounds what the first frame can show.
+  if (this->Role == Height)
+  {
+    vtkNew<vtkFloatArray> page;
+    if (!this->ReadPage(levels - 1, 0, 0, page))
+    {
+      in.Streamed = false;
+      return false;
+    }
+    double lo = VTK_DOUBLE_MAX, hi = -VTK_DOUBLE_MAX;
+    for (vtkIdType i = 0; i < page->GetNumberOfValues(); ++i)
+    {
+      const double v = page->GetValue(i);
+      if (!std::isnan(v))
+      {
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+      }
+    }
+    this->MinimumValue = lo <= hi ? lo : 0.0;
+    this->MaximumValue = lo <= hi ? hi : 0.0;
+  }
+  return true;
+}
+
+bool vtkGlobeLayer::IsStreamed()
+{
+  return this->Valid && this->Internals->Streamed;
+}
+
+vtkGlobePageSource* vtkGlobeLayer::GetPageSource()
+{
+  return this->Internals->Pages;
+}
+
+bool vtkGlobeLayer::ReadPage(int level, int column, int row, vtkDataArray* page)
+{
+  vtkInternals& in = *this->Internals;
+  if (!in.Streamed)
+  {
+    vtkErrorMacro(<< "ReadPage: " << this->DescribeSource() << " is not a streamed layer");
+    return false;
+  }
+  if (!in.Pages->ReadPage(level, column, row, page))
+  {
+    return false;
+  }
+  auto* heights = vtkFloatArray::SafeDownCast(page);
+  if (!heights)
+  {
+    return true; // RGBA as read
+  }
+  vtkInternals::PageValues v;
+  {
+    std::lock_guard<std::mutex> lock(in.ValuesMutex);
+    v = in.Values;
+  }
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  float* values = heights->GetPointer(0);
+  bool voids = false;
+  for (vtkIdType i = 0, n = heights->GetNumberOfValues(); i < n; ++i)
+  {
+    const double raw = values[i];
+    if (std::isnan(raw) || (v.OverriddenNoData && raw == v.NoData))
+    {
+      values[i] = nan;
+      voids = true;
+      continue;
+    }
+    const double h = raw * v.Scale + v.Offset;
+    values[i] = h >= v.Minimum && h <= v.Maximum ? static_cast<float>(h) : nan;
+    voids |= std::isnan(values[i]);
+  }
+  vtkGlobePageSource* pages = in.Pages;
+  if (!voids || !v.Fill ||
+    std::all_of(values, values + heights->GetNumberOfValues(), [](float x) { return std::isnan(x); }))
+  {
+    return true;
+  }
+  if (level + 1 >= pages->GetNumberOfLevels())
+  {
+    // The coarsest level is this one page: the whole push-pull fill, as for whole layers.
+    const int T = pages->GetPageTexels();
+    std::vector<float> page(values, values + static_cast<size_t>(T) * T);
+    PushPullFill(page, T, T);
+    std::copy(page.begin(), page.end(), values);
+    return true;
+  }
+  // Pull: each void takes the bilinear value of the filled level above at its centre. The
+  // parent page (column / 2, row / 2) holds this page and its border within its own border.
+  vtkNew<vtkFloatArray> parent;
+  if (!this->ReadPage(level + 1, column / 2, row / 2, parent))
+  {
+    return true; // the voids stay voids
+  }
+  const int P = pages->GetPageSize(), B = pages->GetBorder(), T = pages->GetPageTexels();
+  int size[2], up[2];
+  pages->GetLevelSize(level, size);
+  pages->GetLevelSize(level + 1, up);
+  const float* above = parent->GetPointer(0);
+  for (int j = 0; j < T; ++j)
+  {
+    for (int i = 0; i < T; ++i)
+    {
+      float& out = values[static_cast<size_t>(j) * T + i];
+      if (!std::isnan(out))
+      {
+        continue;
+      }
+      // Texel centre in this level -> texel coordinates in the parent page.
+      const double x = (column * P + i - B + 0.5) * up[0] / size[0] - 0.5 - (column / 2) * P + B;
+      const double y = (row * P + j - B + 0.5) * up[1] / size[1] - 0.5 - (row / 2) * P + B;
+      const int x0 = std::clamp(static_cast<int>(std::floor(x)), 0, T - 2);
+      const int y0 = std::clamp(static_cast<int>(std::floor(y)), 0, T - 2);
+      const double fx = std::clamp(x - x0, 0.0, 1.0), fy = std::clamp(y - y0, 0.0, 1.0);
+      double sum = 0.0, weight = 0.0;
+      for (int k = 0; k < 4; ++k)
+      {
+        const int dx = k & 1, dy = k >> 1;
+        const float a = above[static_cast<size_t>(y0 + dy) * T + x0 + dx];
+        const double w = (dx ? fx : 1.0 - fx) * (dy ? fy : 1.0 - fy);
+        if (!std::isnan(a) && w > 0.0)
+        {
+          sum += w * a;
+          weight += w;
+        }
+      }
+      if (weight > 0.0)
+      {
+        out = static_cast<float>(sum / weight);
+      }
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------------------
 std::string vtkGlobeLayer::DescribeSource()
 {
   vtkInternals& in = *this->Internals;
@@ -911,7 +1168,7 @@ void vtkGlobeLayer::ReportInputFailure()
 }
 
 //------------------------------------------------------------------------------------------
-bool vtkGlobeLayer::Load(vtkImageData* image)
+bool vtkGlobeLayer::Load(vtkImageData* image, int streamedRows)
 {
   vtkInternals& in = *this->Internals;
   const std::string what = this->DescribeSource();
@@ -942,9 +1199,12 @@ bool vtkGlobeLayer::Load(vtkImageData* image)
   int extent[6];
   image->GetExtent(extent);
   const int width = extent[1] - extent[0] + 1;
-  const int height = extent[3] - extent[2] + 1;
-  if (width <= 0 || height <= 0 || extent[5] != extent[4] || !scalars ||
-    scalars->GetNumberOfTuples() != static_cast<vtkIdType>(width) * height)
+  const int imageRows = extent[3] - extent[2] + 1;
+  // Streamed: the image is the north row only, of a raster streamedRows high.
+  const bool streamed = streamedRows > 0;
+  const int height = streamed ? streamedRows : imageRows;
+  if (width <= 0 || imageRows <= 0 || extent[5] != extent[4] || !scalars ||
+    scalars->GetNumberOfTuples() != static_cast<vtkIdType>(width) * imageRows)
   {
     return fail("it is not a 2D image with point scalars (extent " + std::to_string(width) + " x " +
       std::to_string(height) + ")");
@@ -969,7 +1229,7 @@ bool vtkGlobeLayer::Load(vtkImageData* image)
   const double copyBytes =
     static_cast<double>(width) * height * (this->Role == Height ? 4.0 : 4.0 + channels);
   const int budget = in.Reader->GetMaximumMemory();
-  if (copyBytes > budget * 1024.0 * 1024.0)
+  if (!streamed && copyBytes > budget * 1024.0 * 1024.0)
   {
     char text[400];
     std::snprintf(text, sizeof(text),
@@ -1063,7 +1323,11 @@ bool vtkGlobeLayer::Load(vtkImageData* image)
 
   // Values, row 0 north.
   const size_t n = static_cast<size_t>(width) * height;
-  if (this->Role == Height)
+  if (streamed)
+  {
+    this->NumberOfComponents = this->Role == Height ? 1 : 4;
+  }
+  else if (this->Role == Height)
   {
     std::vector<float> heights;
     switch (scalars->GetDataType())
@@ -1307,6 +1571,9 @@ void vtkGlobeLayer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DatumSemiAxes: " << this->DatumSemiMajorAxis << ", " << this->DatumSemiMinorAxis
      << "\n";
   os << indent << "NumberOfVoids: " << this->NumberOfVoids << "\n";
+  static const char* const streaming[] = { "Off", "On", "Auto" };
+  os << indent << "Streaming: " << streaming[this->Streaming] << " (threshold "
+     << this->StreamingThreshold << "; " << (this->IsStreamed() ? "streamed" : "whole") << ")\n";
   if (this->Role == Height)
   {
     os << indent << "Range: " << this->MinimumValue << " .. " << this->MaximumValue << "\n";

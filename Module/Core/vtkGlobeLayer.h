@@ -61,6 +61,7 @@ class vtkAlgorithm;
 class vtkAlgorithmOutput;
 class vtkDataArray;
 class vtkDataObject;
+class vtkGlobePageSource;
 class vtkGlobeRasterReader;
 class vtkImageData;
 
@@ -112,6 +113,14 @@ public:
   {
     Geographic = 1,
     Projected = 2
+  };
+
+  /// Whether a file is read whole (Off) or page by page (On); Auto decides by its size.
+  enum StreamingModes
+  {
+    StreamingOff = 0,
+    StreamingOn = 1,
+    StreamingAuto = 2
   };
 
   ///@{
@@ -275,6 +284,45 @@ public:
   /// True after a successful load, until the next failure.
   bool IsValid() { return this->Valid; }
 
+  ///@{
+  /**
+   * Streaming (Documentation/streaming.md): a streamed layer never reads its raster whole.
+   * Update() reads the file's header, georeferencing and coarsest level only; the renderer
+   * reads pages (level, column, row) on demand through GetPageSource(), an OpenImageIO
+   * ImageCache capped at its CacheMemory, and keeps the pages it shows in a GPU page cache.
+   * Auto (the default) streams files wider or taller than StreamingThreshold texels
+   * (default 8192: such a layer would need over 256 MiB of float texture whole, and files
+   * over 16384 cannot be one texture at all); On streams every file; Off reads files whole.
+   * In-memory data and pipeline input are always whole (they are in memory already).
+   * A streamed layer has no GetData(); its Minimum/MaximumValue are those of its coarsest
+   * level (the renderer widens them as finer pages load). FillVoids fills each page's voids
+   * as it is read, bilinearly from the (filled) page one level up: the pull half of the
+   * push-pull fill, page by page; ValueScale, ValueOffset, the plausible range and an overridden nodata value
+   * are applied to every page as it is read. Mask layers stream only from 3 or 4 channels.
+   */
+  vtkSetClampMacro(Streaming, int, StreamingOff, StreamingAuto);
+  vtkGetMacro(Streaming, int);
+  void SetStreamingToOff() { this->SetStreaming(StreamingOff); }
+  void SetStreamingToOn() { this->SetStreaming(StreamingOn); }
+  void SetStreamingToAuto() { this->SetStreaming(StreamingAuto); }
+  vtkSetClampMacro(StreamingThreshold, int, 1, VTK_INT_MAX);
+  vtkGetMacro(StreamingThreshold, int);
+  /// True when the last successful Update() made a streamed layer.
+  bool IsStreamed();
+  /// The page source of a streamed layer (its page size, border and cache memory are set by
+  /// the renderer before Update()).
+  vtkGlobePageSource* GetPageSource();
+  /**
+   * One page of a streamed layer with this layer's value settings applied: the page
+   * source's ReadPage (float heights with NaN voids, or RGBA) then, for heights,
+   * value * ValueScale + ValueOffset, and NaN where that lies outside the plausible range
+   * or equals an overridden nodata value; with FillVoids, voids filled from the level above.
+   * Thread-safe while no setting changes; returns
+   * false (with an error) when the layer is not streamed or the page cannot be read.
+   */
+  bool ReadPage(int level, int column, int row, vtkDataArray* page);
+  ///@}
+
   /// How many times the data was (re)built from the file or the in-memory values.
   vtkGetMacro(NumberOfLoads, int);
 
@@ -379,6 +427,8 @@ protected:
   bool ProjectionQualityWeight = false;
   double ProjectionQualityLimit = 8.0;
   int Interpolation = Linear;
+  int Streaming = StreamingAuto;
+  int StreamingThreshold = 8192;
 
   // Results of the last load.
   bool Valid = false;
@@ -399,7 +449,8 @@ private:
   vtkGlobeLayer(const vtkGlobeLayer&) = delete;
   void operator=(const vtkGlobeLayer&) = delete;
 
-  bool Load(vtkImageData* image);
+  bool Load(vtkImageData* image, int streamedRows = 0);
+  bool LoadStreamed();
   bool StartMemoryData(const char* method, const char* what, int width, int height,
     const void* values, const double extent[4]);
   void SetMemoryImage(int role, int width, int height, int components, int scalarType,

@@ -281,6 +281,14 @@ std::string Build(const std::string& file, int pageSize, int border, double cach
     {
       break;
     }
+    // A file without levels of its own (no "Plain Texture" tag: OpenImageIO's automip would
+    // make them, blind to nodata, so voids of -32768 turn into deep pits): when its full
+    // resolution fits in memory, the levels are averaged here, nodata-aware, instead.
+    if (level == 0 && spec.get_string_attribute("textureformat").empty() &&
+      static_cast<double>(ls.width) * ls.height <= MaxSynthesisTexels)
+    {
+      break;
+    }
   }
   s.FileLevels = static_cast<int>(s.Levels.size());
 

@@ -9,9 +9,13 @@
  * is the raster's extent divided by the level's size. Where the levels come from:
  * - a file written by vtkGlobeRasterPreparer (GlobePrepare): its reduced-resolution IFDs,
  *   which OpenImageIO reads as MIP levels (nodata-aware averages for heights);
- * - a file without levels (tiled or not: OpenImageIO 2.4 applies "automip" to both): the
- *   ImageCache makes them on demand from the level above (OpenImageIO's filter, a box average
- *   for halving; not nodata-aware, so voids bleed into their surroundings);
+ * - a file without levels whose full resolution fits in memory (up to 4096 x 4096 texels):
+ *   averaged here, nodata-aware, as below (OpenImageIO's automip would average -32768 voids
+ *   into deep pits);
+ * - a larger file without levels (tiled or not: OpenImageIO 2.4 applies "automip" to both):
+ *   the ImageCache makes them on demand from the level above (OpenImageIO's filter, a box
+ *   average for halving; not nodata-aware, so voids bleed into their surroundings: prepare
+ *   such files with GlobePrepare);
  * - a file whose own chain stops before a level fits in one page (e.g. a prepared file whose
  *   tiles are larger than PageSize, or other multi-level TIFFs): the missing levels are
  *   averaged here, nodata-aware, from the file's coarsest level, which is read whole once

@@ -3,10 +3,14 @@
 #include "vtkDataArray.h"
 #include "vtkGlobeLayer.h"
 #include "vtkGlobeMapProjection.h"
+#include "vtkGlobePageCache.h"
+#include "vtkGlobePageSource.h"
+#include "vtkDoubleArray.h"
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkShaderProgram.h"
+#include "vtkNew.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
@@ -46,6 +50,9 @@ struct Entry
   // The loaded data the projection was prepared for: georeferencing changes only with a load.
   vtkDataArray* PreparedData = nullptr;
   vtkMTimeType PreparedTime = 0;
+  int PreparedLoads = -1;
+  // Streamed (vtkGlobeLayer::IsStreamed): pages in the page cache instead of a texture.
+  bool Streamed = false;
   bool Prepared = false;
   double Border[4] = { 0, 0, 0, 0 }; // feather u, v (texture coordinates); 1/log(n); unused
 };
@@ -79,6 +86,8 @@ public:
   std::vector<std::shared_ptr<Entry>> Entries;
   // Textures of removed layers, released when a context is at hand.
   std::vector<vtkSmartPointer<vtkTextureObject>> Retired;
+  // The GPU side of streamed layers.
+  vtkNew<vtkGlobePageCache> Pages;
   // Active layers by role, in composition order; Index[] is the uniform index of each.
   std::array<std::vector<Entry*>, NumberOfRoles> Roles;
   int NextAdded = 0;
@@ -221,13 +230,16 @@ int vtkGlobeLayerSet::Update()
       continue;
     }
     const bool projected = layer->GetModelType() == vtkGlobeLayer::Projected;
-    vtkDataArray* data = layer->GetData();
-    if (data != e.PreparedData || data->GetMTime() != e.PreparedTime)
+    vtkDataArray* data = layer->GetData(); // nullptr when streamed
+    e.Streamed = layer->IsStreamed();
+    if (data != e.PreparedData || (data && data->GetMTime() != e.PreparedTime) ||
+      layer->GetNumberOfLoads() != e.PreparedLoads)
     {
       e.Function.clear();
       e.Prepared = !projected || this->PrepareProjection(&e);
       e.PreparedData = data;
-      e.PreparedTime = data->GetMTime();
+      e.PreparedTime = data ? data->GetMTime() : 0;
+      e.PreparedLoads = layer->GetNumberOfLoads();
     }
     if (projected)
     {
@@ -282,20 +294,34 @@ int vtkGlobeLayerSet::Update()
       : a->Added < b->Added;
   });
 
-  // Heights: an interval bound of what the composition can give (the PGM spheres need it).
-  in.MinimumHeight = in.MaximumHeight = 0.0;
-  bool first = true;
   for (Entry* e : order)
   {
+    in.Roles[e->Layer->GetRole()].push_back(e);
+  }
+  this->ComputeHeightRange();
+  return static_cast<int>(order.size());
+}
+
+void vtkGlobeLayerSet::ComputeHeightRange()
+{
+  // Heights: an interval bound of what the composition can give (the PGM spheres need it).
+  // A streamed layer adds the range of the pages it uploaded: what the GPU can show.
+  auto& in = *this->Internals;
+  in.MinimumHeight = in.MaximumHeight = 0.0;
+  bool first = true;
+  for (Entry* e : in.Roles[vtkGlobeLayer::Height])
+  {
     vtkGlobeLayer* layer = e->Layer;
-    in.Roles[layer->GetRole()].push_back(e);
-    if (layer->GetRole() != vtkGlobeLayer::Height)
+    double range[2] = { layer->GetMinimumValue(), layer->GetMaximumValue() };
+    double loaded[2];
+    if (e->Streamed && in.Pages->GetLoadedHeightRange(layer, loaded))
     {
-      continue;
+      range[0] = std::min(range[0], loaded[0]);
+      range[1] = std::max(range[1], loaded[1]);
     }
     const double* valid = layer->GetValidRange();
-    const double lo = std::max(layer->GetMinimumValue(), valid[0]);
-    const double hi = std::min(layer->GetMaximumValue(), valid[1]);
+    const double lo = std::max(range[0], valid[0]);
+    const double hi = std::min(range[1], valid[1]);
     if (lo > hi)
     {
       continue; // nothing of it is valid
@@ -312,7 +338,6 @@ int vtkGlobeLayerSet::Update()
     }
     first = false;
   }
-  return static_cast<int>(order.size());
 }
 
 bool vtkGlobeLayerSet::PrepareProjection(void* entry)
@@ -410,7 +435,7 @@ int vtkGlobeLayerSet::GetNumberOfActiveLayers(int role)
 }
 
 //------------------------------------------------------------------------------
-void vtkGlobeLayerSet::UploadTextures(vtkOpenGLRenderWindow* window)
+void vtkGlobeLayerSet::UploadTextures(vtkOpenGLRenderWindow* window, bool waitForPages)
 {
   this->Internals->ReleaseRetired(window);
   for (auto& held : this->Internals->Entries)
@@ -418,6 +443,11 @@ void vtkGlobeLayerSet::UploadTextures(vtkOpenGLRenderWindow* window)
     Entry& e = *held;
     if (!e.Active)
     {
+      continue;
+    }
+    if (e.Streamed)
+    {
+      this->Internals->Pages->AddFrameLayer(e.Layer);
       continue;
     }
     vtkGlobeLayer* layer = e.Layer;
@@ -459,11 +489,23 @@ void vtkGlobeLayerSet::UploadTextures(vtkOpenGLRenderWindow* window)
     e.UploadedTime = data->GetMTime();
     ++this->NumberOfUploads;
   }
+  // Streamed layers: the pages the last frames asked for, and the coarsest of new layers.
+  this->Internals->Pages->BeginFrame(window, waitForPages);
+  for (auto& list : this->Internals->Roles)
+  {
+    // A layer whose coarsest page could not be read or placed is skipped.
+    list.erase(std::remove_if(list.begin(), list.end(),
+                 [this](Entry* e) {
+                   return e->Streamed && !this->Internals->Pages->GetTable(e->Layer);
+                 }),
+      list.end());
+  }
+  this->ComputeHeightRange();
 }
 
 size_t vtkGlobeLayerSet::GetTextureMemory()
 {
-  size_t bytes = 0;
+  size_t bytes = this->Internals->Pages->GetGPUMemoryUsed();
   for (auto& held : this->Internals->Entries)
   {
     const Entry& e = *held;
@@ -546,6 +588,108 @@ std::string UV(const Entry* e, const std::string& p, const LonLat& c, bool highP
   return call + ")";
 }
 
+// A layer's filtered value at texture coordinates `uv` (GLSL): its texture, or for a
+// streamed layer its pages (globe_pageGrad), with the screen derivatives dx, dy.
+std::string Sample(const Entry* e, const std::string& p, const std::string& uv)
+{
+  if (!e->Streamed)
+  {
+    return "textureGrad(" + p + ", " + uv + ", dx, dy)";
+  }
+  const bool height = e->Layer->GetRole() == vtkGlobeLayer::Height;
+  const bool nearest = e->Layer->GetInterpolation() == vtkGlobeLayer::Nearest;
+  return std::string("globe_pageGrad(") + (height ? "globePagesHeights" : "globePagesImages") +
+    ", " + p + "Table, " + p + "Levels, " + uv + ", dx, dy, " + (nearest ? "true" : "false") + ")";
+}
+
+// A layer's level-0 size in texels (GLSL vec2).
+std::string Size(const Entry* e, const std::string& p)
+{
+  return e->Streamed ? "texelFetch(" + p + "Table, ivec2(0), 0).xy"
+                     : "vec2(textureSize(" + p + ", 0))";
+}
+
+// Page lookup of streamed layers (vtkGlobePageCache's table layout): row 0 of a table holds
+// each level's (width, height, first row, page columns); below, one texel per page: (slot,
+// level, column, row) of the page or of its finest resident ancestor.
+const char* const PageFunctions =
+  "uniform vec2 globePageGeometry;\n" // payload texels, border texels
+  // scale: atlas units per unit of uv in the page found (its own level's size).
+  "vec3 globe_pageCoord(sampler2D table, vec2 uv, int level, out vec2 scale)\n"
+  "{\n"
+  "  float P = globePageGeometry.x;\n"
+  "  vec4 L = texelFetch(table, ivec2(level, 0), 0);\n"
+  "  vec2 count = vec2(L.w, ceil(L.y / P));\n"
+  "  ivec2 page = ivec2(clamp(floor(uv * L.xy / P), vec2(0.0), count - 1.0));\n"
+  "  vec4 e = texelFetch(table, ivec2(page.x, int(L.z) + page.y), 0);\n"
+  "  vec2 size = texelFetch(table, ivec2(int(e.y), 0), 0).xy;\n"
+  "  vec2 local = uv * size - e.zw * P;\n"
+  "  float T = P + 2.0 * globePageGeometry.y;\n"
+  "  scale = size / T;\n"
+  "  return vec3((local + globePageGeometry.y) / T, e.x);\n"
+  "}\n"
+  "float globe_pageAt(sampler2DArray atlas, vec3 c, vec2 offset, bool nearest)\n"
+  "{\n"
+  "  vec3 q = vec3(c.xy + offset, c.z);\n"
+  "  float T = globePageGeometry.x + 2.0 * globePageGeometry.y;\n"
+  "  return nearest ? texelFetch(atlas, ivec3(ivec2(floor(q.xy * T)), int(q.z)), 0).r\n"
+  "                 : textureLod(atlas, q, 0.0).r;\n"
+  "}\n"
+  // Heights at uv and one level-0 texel east, west, north and south of it (the gradient),
+  // with one page lookup per level: the neighbours lie in the same page or its border (two
+  // texels, at least one level-0 texel at every level).
+  "void globe_pageHeights(sampler2DArray atlas, sampler2D table, float levels, vec2 uv,\n"
+  "  vec2 dx, vec2 dy, bool nearest, out float v, out vec4 ewns)\n"
+  "{\n"
+  "  vec2 size = texelFetch(table, ivec2(0), 0).xy;\n"
+  "  float rho = max(length(dx * size), length(dy * size));\n"
+  "  float lod = clamp(log2(max(rho, 1e-30)), 0.0, levels - 1.0);\n"
+  "  int l = nearest ? int(floor(lod + 0.5)) : int(floor(lod));\n"
+  "  float f = nearest ? 0.0 : lod - float(l);\n"
+  "  vec2 scale;\n"
+  "  vec3 c = globe_pageCoord(table, uv, l, scale);\n"
+  "  vec2 s = scale / size;\n"
+  "  v = globe_pageAt(atlas, c, vec2(0.0), nearest);\n"
+  "  ewns = vec4(globe_pageAt(atlas, c, vec2(s.x, 0.0), nearest),\n"
+  "    globe_pageAt(atlas, c, vec2(-s.x, 0.0), nearest),\n"
+  "    globe_pageAt(atlas, c, vec2(0.0, -s.y), nearest),\n"
+  "    globe_pageAt(atlas, c, vec2(0.0, s.y), nearest));\n"
+  "  if (f > 0.0)\n"
+  "  {\n"
+  "    c = globe_pageCoord(table, uv, l + 1, scale);\n"
+  "    s = scale / size;\n"
+  "    v = mix(v, globe_pageAt(atlas, c, vec2(0.0), false), f);\n"
+  "    ewns = mix(ewns, vec4(globe_pageAt(atlas, c, vec2(s.x, 0.0), false),\n"
+  "      globe_pageAt(atlas, c, vec2(-s.x, 0.0), false),\n"
+  "      globe_pageAt(atlas, c, vec2(0.0, -s.y), false),\n"
+  "      globe_pageAt(atlas, c, vec2(0.0, s.y), false)), f);\n"
+  "  }\n"
+  "}\n"
+  // The level from the footprint as OpenGL chooses a mipmap level; linear: between two
+  // levels, nearest: the nearest level's nearest texel.
+  "vec4 globe_pageGrad(sampler2DArray atlas, sampler2D table, float levels, vec2 uv, vec2 dx,\n"
+  "  vec2 dy, bool nearest)\n"
+  "{\n"
+  "  vec2 size = texelFetch(table, ivec2(0), 0).xy;\n"
+  "  float rho = max(length(dx * size), length(dy * size));\n"
+  "  float lod = clamp(log2(max(rho, 1e-30)), 0.0, levels - 1.0);\n"
+  "  vec2 scale;\n"
+  "  if (nearest)\n"
+  "  {\n"
+  "    vec3 c = globe_pageCoord(table, uv, int(floor(lod + 0.5)), scale);\n"
+  "    float T = globePageGeometry.x + 2.0 * globePageGeometry.y;\n"
+  "    return texelFetch(atlas, ivec3(ivec2(floor(c.xy * T)), int(c.z)), 0);\n"
+  "  }\n"
+  "  int l = int(floor(lod));\n"
+  "  vec4 a = textureLod(atlas, globe_pageCoord(table, uv, l, scale), 0.0);\n"
+  "  float f = lod - float(l);\n"
+  "  if (f > 0.0)\n"
+  "  {\n"
+  "    a = mix(a, textureLod(atlas, globe_pageCoord(table, uv, l + 1, scale), 0.0), f);\n"
+  "  }\n"
+  "  return a;\n"
+  "}\n";
+
 void EmitResolveAverage(std::ostream& s, const char* target, const char* zero)
 {
   s << "  if (sumW > 0.0) " << target << " = mix(" << target
@@ -571,7 +715,10 @@ std::string vtkGlobeLayerSet::GetShaderKey(int roles)
     {
       key << e->Layer->GetBlendMode()
           << (!e->Function.empty() ? e->Function.substr(13, 2) : (e->Wraps ? "w" : "g"))
-          << (e->Layer->GetProjectionQualityWeight() ? "q" : "") << ",";
+          << (e->Layer->GetProjectionQualityWeight() ? "q" : "")
+          << (e->Streamed ? "s" : "")
+          << (e->Streamed && e->Layer->GetInterpolation() == vtkGlobeLayer::Nearest ? "n" : "")
+          << ",";
     }
     key << "]";
   }
@@ -594,6 +741,27 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
   if (projected)
   {
     s << globe_projection << "\n";
+  }
+  // Streamed layers: the page atlases of the kinds they use, and the page lookup.
+  bool streamed[2] = { false, false };
+  for (int role = 0; role < NumberOfRoles; ++role)
+  {
+    for (const Entry* e : in.Roles[role])
+    {
+      streamed[role == vtkGlobeLayer::Height ? 0 : 1] |= Included(role, roles) && e->Streamed;
+    }
+  }
+  if (streamed[0])
+  {
+    s << "uniform sampler2DArray globePagesHeights;\n";
+  }
+  if (streamed[1])
+  {
+    s << "uniform sampler2DArray globePagesImages;\n";
+  }
+  if (streamed[0] || streamed[1])
+  {
+    s << PageFunctions;
   }
   // Shared helpers: texture coordinates of a geographic layer, the coverage weight with its
   // feathered border, and Kooima's projection-quality weight.
@@ -663,8 +831,16 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
     for (size_t i = 0; i < list.size(); ++i)
     {
       const std::string p = Prefix(role, i);
-      s << "uniform sampler2D " << p << ";\n"
-        << "uniform vec4 " << p << "Map;\n";
+      if (list[i]->Streamed)
+      {
+        s << "uniform sampler2D " << p << "Table;\n"
+          << "uniform float " << p << "Levels;\n";
+      }
+      else
+      {
+        s << "uniform sampler2D " << p << ";\n";
+      }
+      s << "uniform vec4 " << p << "Map;\n";
       if (hp && list[i]->Function.empty())
       {
         s << "uniform vec2 " << p << "MapLo;\n";
@@ -747,20 +923,31 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
       {
         s << "  uvE = " << UV(e, p, At(hp, "1e-3"), hp) << ";\n"
           << "  uvN = " << UV(e, p, At(hp, nullptr, "(lat > 0.0 ? -1e-3 : 1e-3)"), hp) << ";\n"
-          << "  w *= globe_quality(uv, uvE, uvN, cosLat, vec2(textureSize(" << p << ", 0)), " << p
+          << "  w *= globe_quality(uv, uvE, uvN, cosLat, " << Size(e, p) << ", " << p
           << "Border.z, " << (e->Wraps ? "true" : "false") << ");\n";
       }
       s << "  if (w > 0.0)\n  {\n";
       if (height)
       {
         // Value and gradient per radian of lon and lat (central differences one texel apart).
-        s << "    vec2 texel = 1.0 / vec2(textureSize(" << p << ", 0));\n"
-          << "    float v = textureGrad(" << p << ", uv, dx, dy).r;\n"
-          << "    float vE = textureGrad(" << p << ", uv + vec2(texel.x, 0.0), dx, dy).r;\n"
-          << "    float vW = textureGrad(" << p << ", uv - vec2(texel.x, 0.0), dx, dy).r;\n"
-          << "    float vN = textureGrad(" << p << ", uv - vec2(0.0, texel.y), dx, dy).r;\n"
-          << "    float vS = textureGrad(" << p << ", uv + vec2(0.0, texel.y), dx, dy).r;\n"
-          ;
+        s << "    vec2 texel = 1.0 / " << Size(e, p) << ";\n";
+        if (e->Streamed)
+        {
+          s << "    float v;\n    vec4 ewns;\n"
+            << "    globe_pageHeights(globePagesHeights, " << p << "Table, " << p
+            << "Levels, uv, dx, dy, "
+            << (layer->GetInterpolation() == vtkGlobeLayer::Nearest ? "true" : "false")
+            << ", v, ewns);\n"
+            << "    float vE = ewns.x, vW = ewns.y, vN = ewns.z, vS = ewns.w;\n";
+        }
+        else
+        {
+          s << "    float v = " << Sample(e, p, "uv") << ".r;\n"
+            << "    float vE = " << Sample(e, p, "uv + vec2(texel.x, 0.0)") << ".r;\n"
+            << "    float vW = " << Sample(e, p, "uv - vec2(texel.x, 0.0)") << ".r;\n"
+            << "    float vN = " << Sample(e, p, "uv - vec2(0.0, texel.y)") << ".r;\n"
+            << "    float vS = " << Sample(e, p, "uv + vec2(0.0, texel.y)") << ".r;\n";
+        }
         if (e->Function.empty())
         {
           s << "    vec2 gi = vec2((vE - vW) / (2.0 * texel.x * " << p << "Map.y),\n"
@@ -785,7 +972,7 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
       }
       else
       {
-        s << "    vec4 t = textureGrad(" << p << ", uv, dx, dy);\n"
+        s << "    vec4 t = " << Sample(e, p, "uv") << ";\n"
           << "    w *= t.a;\n"
           << "    vec3 rgb = pow(t.rgb, vec3(" << p << "Style.y));\n";
         switch (role)
@@ -837,6 +1024,156 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
 }
 
 //------------------------------------------------------------------------------
+vtkGlobePageCache* vtkGlobeLayerSet::GetPageCache()
+{
+  return this->Internals->Pages;
+}
+
+int vtkGlobeLayerSet::GetNumberOfStreamedLayers()
+{
+  int n = 0;
+  for (const auto& list : this->Internals->Roles)
+  {
+    n += static_cast<int>(std::count_if(list.begin(), list.end(), [](Entry* e) { return e->Streamed; }));
+  }
+  return n;
+}
+
+void vtkGlobeLayerSet::RequestPages(vtkDoubleArray* footprints, int blockPixels, double gridCellPixels)
+{
+  auto& in = *this->Internals;
+  if (!footprints || footprints->GetNumberOfComponents() != 6)
+  {
+    return;
+  }
+  const double pi = vtkMath::Pi(), twoPi = 2.0 * pi;
+  const double deg = 180.0 / pi;
+  const double gridLod = std::log2(std::max(1.0, gridCellPixels));
+  const vtkIdType n = footprints->GetNumberOfTuples();
+  for (const auto& list : in.Roles)
+  {
+    for (Entry* e : list)
+    {
+      if (!e->Streamed)
+      {
+        continue;
+      }
+      vtkGlobeLayer* layer = e->Layer;
+      vtkGlobePageSource* pages = layer->GetPageSource();
+      const int levels = in.Pages->GetNumberOfLevels(layer);
+      const int P = in.Pages->GetPageSize();
+      if (levels <= 0)
+      {
+        continue;
+      }
+      std::vector<std::array<int, 4>> level(levels); // width, height, columns, rows
+      for (int l = 0; l < levels; ++l)
+      {
+        int size[2], count[2];
+        pages->GetLevelSize(l, size);
+        pages->GetNumberOfPages(l, count);
+        level[l] = { size[0], size[1], count[0], count[1] };
+      }
+      const bool height = layer->GetRole() == vtkGlobeLayer::Height;
+      // The layer's texture coordinates at (lon, lat), in double; false outside its domain.
+      double origin[2], pixel[2];
+      layer->GetProjectedGeoTransform(origin, pixel);
+      const double W = layer->GetWidth(), H = layer->GetHeight();
+      auto uvAt = [&](double lon, double lat, double uv[2]) -> bool {
+        if (e->Function.empty())
+        {
+          uv[0] = std::fmod(lon - e->Map[0], twoPi);
+          uv[0] = (uv[0] < 0.0 ? uv[0] + twoPi : uv[0]) / e->Map[1];
+          uv[1] = (e->Map[2] - lat) / e->Map[3];
+          return true;
+        }
+        double xy[2];
+        const bool warnings = vtkObject::GetGlobalWarningDisplay();
+        vtkObject::GlobalWarningDisplayOff(); // points outside the domain are expected
+        const bool ok = e->Projection->Forward(lon * deg, lat * deg, xy);
+        vtkObject::SetGlobalWarningDisplay(warnings);
+        uv[0] = (xy[0] - origin[0]) / (pixel[0] * W);
+        uv[1] = (origin[1] - xy[1]) / (pixel[1] * H);
+        return ok && std::isfinite(uv[0]) && std::isfinite(uv[1]);
+      };
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        double f[6];
+        footprints->GetTuple(i, f);
+        double uv[2], ux[2], uy[2];
+        if (!uvAt(f[0], f[1], uv) || !uvAt(f[0] + f[2], f[1] + f[3], ux) ||
+          !uvAt(f[0] + f[4], f[1] + f[5], uy))
+        {
+          continue;
+        }
+        double du[2] = { ux[0] - uv[0], ux[1] - uv[1] };
+        double dv[2] = { uy[0] - uv[0], uy[1] - uv[1] };
+        if (e->Wraps)
+        {
+          du[0] -= std::floor(du[0] + 0.5);
+          dv[0] -= std::floor(dv[0] + 0.5);
+        }
+        // The block this sample stands for, in texture coordinates (one pixel of margin).
+        const double reach = 0.5 * blockPixels + 1.0;
+        const double halfU = reach * (std::abs(du[0]) + std::abs(dv[0]));
+        const double halfV = reach * (std::abs(du[1]) + std::abs(dv[1]));
+        if (!e->Wraps && (uv[0] + halfU < 0.0 || uv[0] - halfU > 1.0))
+        {
+          continue;
+        }
+        if (uv[1] + halfV < 0.0 || uv[1] - halfV > 1.0)
+        {
+          continue;
+        }
+        const double rho = std::max(std::hypot(du[0] * W, du[1] * H), std::hypot(dv[0] * W, dv[1] * H));
+        const double lod = std::log2(std::max(rho, 1e-30));
+        auto ask = [&](double at) {
+          // Linear filtering blends floor(lod) and the level above; nearest takes the
+          // nearer of the two. Both are asked for either way: the coarser one is the
+          // fallback within one level while the finer one loads.
+          const double clamped = std::min(std::max(at, 0.0), levels - 1.0);
+          const int first = static_cast<int>(std::floor(clamped));
+          const int last = std::min(first + 1, levels - 1);
+          for (int l = first; l <= last; ++l)
+          {
+            const auto& L = level[l];
+            const int c0 = static_cast<int>(std::floor((uv[0] - halfU) * L[0] / P));
+            const int c1 = static_cast<int>(std::floor((uv[0] + halfU) * L[0] / P));
+            const int r0 = std::max(0, static_cast<int>(std::floor((uv[1] - halfV) * L[1] / P)));
+            const int r1 = std::min(L[3] - 1, static_cast<int>(std::floor((uv[1] + halfV) * L[1] / P)));
+            if (c1 - c0 > 8 || r1 - r0 > 8)
+            {
+              continue; // a block this wide is sampled coarser; its neighbours ask too
+            }
+            for (int r = r0; r <= r1; ++r)
+            {
+              for (int c = c0; c <= c1; ++c)
+              {
+                int column = c;
+                if (e->Wraps)
+                {
+                  column = ((c % L[2]) + L[2]) % L[2];
+                }
+                else if (c < 0 || c >= L[2])
+                {
+                  continue;
+                }
+                in.Pages->Request(layer, l, column, r);
+              }
+            }
+          }
+        };
+        ask(lod);
+        if (height)
+        {
+          ask(lod + gridLod);
+        }
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkGlobeLayerSet::SetGeodeticReference(const double direction[3], const double radii[3])
 {
   const double largest = std::max(radii[0], std::max(radii[1], radii[2]));
@@ -849,6 +1186,11 @@ void vtkGlobeLayerSet::SetGeodeticReference(const double direction[3], const dou
   }
   this->ReferenceLonLat[0] = std::atan2(q[1], q[0]);
   this->ReferenceLonLat[1] = std::atan2(q[2], std::hypot(q[0], q[1]));
+}
+
+void vtkGlobeLayerSet::GetReferenceDirection(double direction[3])
+{
+  std::copy(this->ReferenceDirection, this->ReferenceDirection + 3, direction);
 }
 
 void vtkGlobeLayerSet::GetGeodeticReference(double lonLat[2])
@@ -889,6 +1231,31 @@ void vtkGlobeLayerSet::BindTextures(vtkShaderProgram* program, int roles)
     program->SetUniform4f("globeGeodeticReference", reference);
     program->SetUniform3f("globeReferenceDirection", direction);
   }
+  // The atlases of the streamed layers' kinds (bound once for all their layers).
+  bool streamed[2] = { false, false };
+  for (int role = 0; role < NumberOfRoles; ++role)
+  {
+    for (const Entry* e : in.Roles[role])
+    {
+      streamed[role == vtkGlobeLayer::Height ? 0 : 1] |= Included(role, roles) && e->Streamed;
+    }
+  }
+  for (int kind = 0; kind < 2; ++kind)
+  {
+    vtkTextureObject* atlas = in.Pages->GetAtlas(kind);
+    if (streamed[kind] && atlas)
+    {
+      atlas->Activate();
+      program->SetUniformi(kind == 0 ? "globePagesHeights" : "globePagesImages",
+        atlas->GetTextureUnit());
+    }
+  }
+  if (streamed[0] || streamed[1])
+  {
+    const float geometry[2] = { static_cast<float>(in.Pages->GetPageSize()),
+      static_cast<float>(vtkGlobePageCache::Border) };
+    program->SetUniform2f("globePageGeometry", geometry);
+  }
   for (int role = 0; role < NumberOfRoles; ++role)
   {
     if (!Included(role, roles))
@@ -901,13 +1268,24 @@ void vtkGlobeLayerSet::BindTextures(vtkShaderProgram* program, int roles)
       Entry* e = list[i];
       vtkGlobeLayer* layer = e->Layer;
       const std::string p = Prefix(role, i);
-      const bool nearest = layer->GetInterpolation() == vtkGlobeLayer::Nearest;
-      e->Texture->SetMagnificationFilter(
-        nearest ? vtkTextureObject::Nearest : vtkTextureObject::Linear);
-      e->Texture->SetMinificationFilter(
-        nearest ? vtkTextureObject::Nearest : vtkTextureObject::LinearMipmapLinear);
-      e->Texture->Activate();
-      program->SetUniformi(p.c_str(), e->Texture->GetTextureUnit());
+      if (e->Streamed)
+      {
+        vtkTextureObject* table = in.Pages->GetTable(layer);
+        table->Activate();
+        program->SetUniformi((p + "Table").c_str(), table->GetTextureUnit());
+        program->SetUniformf(
+          (p + "Levels").c_str(), static_cast<float>(in.Pages->GetNumberOfLevels(layer)));
+      }
+      else
+      {
+        const bool nearest = layer->GetInterpolation() == vtkGlobeLayer::Nearest;
+        e->Texture->SetMagnificationFilter(
+          nearest ? vtkTextureObject::Nearest : vtkTextureObject::Linear);
+        e->Texture->SetMinificationFilter(
+          nearest ? vtkTextureObject::Nearest : vtkTextureObject::LinearMipmapLinear);
+        e->Texture->Activate();
+        program->SetUniformi(p.c_str(), e->Texture->GetTextureUnit());
+      }
       auto f4 = [](const double v[4]) {
         return std::array<float, 4>{ static_cast<float>(v[0]), static_cast<float>(v[1]),
           static_cast<float>(v[2]), static_cast<float>(v[3]) };
@@ -954,7 +1332,22 @@ void vtkGlobeLayerSet::UnbindTextures(int roles)
     }
     for (Entry* e : in.Roles[role])
     {
-      e->Texture->Deactivate();
+      if (!e->Streamed)
+      {
+        e->Texture->Deactivate();
+      }
+      else if (vtkTextureObject* table = in.Pages->GetTable(e->Layer))
+      {
+        table->Deactivate();
+      }
+    }
+  }
+  for (int kind = 0; kind < 2; ++kind)
+  {
+    // Deactivate is harmless for an atlas that was not bound.
+    if (vtkTextureObject* atlas = in.Pages->GetAtlas(kind))
+    {
+      atlas->Deactivate();
     }
   }
 }
@@ -962,6 +1355,7 @@ void vtkGlobeLayerSet::UnbindTextures(int roles)
 void vtkGlobeLayerSet::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Internals->ReleaseRetired(window);
+  this->Internals->Pages->ReleaseGraphicsResources(window);
   for (auto& held : this->Internals->Entries)
   {
     Entry& e = *held;

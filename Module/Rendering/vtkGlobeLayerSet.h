@@ -42,7 +42,9 @@
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
+class vtkDoubleArray;
 class vtkGlobeLayer;
+class vtkGlobePageCache;
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
 class vtkWindow;
@@ -80,8 +82,31 @@ public:
   int GetNumberOfActiveColorLayers() { return this->GetNumberOfActiveLayers(1); }
   ///@}
 
-  /// Uploads changed layers to textures (needs a current context).
-  void UploadTextures(vtkOpenGLRenderWindow* window);
+  /**
+   * Uploads changed layers to textures and starts the page cache's frame for streamed
+   * layers (needs a current context). waitForPages: the page cache first waits for every
+   * page read that is under way and uploads all (vtkGlobeMapper's WaitForPages).
+   */
+  void UploadTextures(vtkOpenGLRenderWindow* window, bool waitForPages = false);
+
+  /// The GPU page cache of the streamed layers (settings and statistics).
+  vtkGlobePageCache* GetPageCache();
+
+  /// Active streamed layers.
+  int GetNumberOfStreamedLayers();
+
+  /**
+   * Asks the page cache for the pages the streamed layers need, from footprint samples of
+   * the frame (vtkGlobeMapper's feedback): 6 components per tuple, (lon, lat, dlon/dx,
+   * dlat/dx, dlon/dy, dlat/dy) in radians and radians per pixel, each standing for a block
+   * of blockPixels x blockPixels pixels. For each sample and layer: the texture coordinates
+   * (in double, through the layer's projection), the level the composition samples
+   * (log2 of the footprint in level-0 texels, as OpenGL chooses mipmap levels; the two
+   * levels linear filtering blends), and every page the block reaches at that level. Height
+   * layers are also composed at the projective grid's points, gridCellPixels apart: their
+   * pages at that footprint are asked for as well.
+   */
+  void RequestPages(vtkDoubleArray* footprints, int blockPixels, double gridCellPixels);
 
   /// Bit masks of roles (1 << vtkGlobeLayer::Roles) for the calls below.
   enum RoleMasks
@@ -122,6 +147,8 @@ public:
   void SetGeodeticReference(const double direction[3], const double radii[3]);
   /// The local origin's (lon, lat) in radians.
   void GetGeodeticReference(double lonLat[2]);
+  /// The local origin's direction (scaled space), as set.
+  void GetReferenceDirection(double direction[3]);
 
   ///@{
   /**
@@ -149,6 +176,7 @@ protected:
 
 private:
   bool PrepareProjection(void* entry);
+  void ComputeHeightRange();
   vtkGlobeLayerSet(const vtkGlobeLayerSet&) = delete;
   void operator=(const vtkGlobeLayerSet&) = delete;
 

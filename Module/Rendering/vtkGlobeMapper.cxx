@@ -9,6 +9,9 @@
 #include "vtkGlobeGridPass.h"
 #include "vtkGlobeLayer.h"
 #include "vtkGlobeLayerSet.h"
+#include "vtkGlobePageCache.h"
+#include "vtkGlobePageFeedback.h"
+#include "vtkDoubleArray.h"
 #include "vtkGlobeProjectiveGrid.h"
 #include "vtkGlobeShaderSources.h"
 #include "vtkLight.h"
@@ -50,6 +53,14 @@ public:
   vtkNew<vtkGlobeProjectiveGrid> Grid;
   vtkNew<vtkGlobeGridPass> GridPass;
   vtkNew<vtkGlobeCompositePass> Composite;
+  // Streamed layers: the frame's footprint samples, read back the next frame.
+  vtkNew<vtkGlobePageFeedback> Feedback;
+  vtkNew<vtkDoubleArray> Footprints;
+  double FeedbackGridCell = 1.0; // the grid's cell in pixels when the feedback was drawn
+  // Idle: the last feedback read back asked for nothing new and was drawn from the view the
+  // last frame showed (camera and window size).
+  std::vector<double> FeedbackView, CollectedView, RenderedView;
+  bool LastFeedbackAskedForMore = false;
 
   // G-buffer: direction + height, and depth.
   vtkSmartPointer<vtkTextureObject> GBuffer;
@@ -414,6 +425,7 @@ void vtkGlobeMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   auto& in = *this->Internals;
   in.Layers->ReleaseGraphicsResources(window);
+  in.Feedback->ReleaseGraphicsResources(window);
   in.GridPass->ReleaseGraphicsResources(window);
   in.Composite->ReleaseGraphicsResources(window);
   for (auto* t : { in.GBuffer.Get(), in.GDepth.Get() })
@@ -614,9 +626,23 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
 
   this->CollectReduction();
   in.UpdateLayers();
-  in.Layers->UploadTextures(window);
-  const double minHeight = in.Layers->GetMinimumHeight();
-  const double maxHeight = in.Layers->GetMaximumHeight();
+  const bool streaming = in.Layers->GetNumberOfStreamedLayers() > 0;
+  if (in.Feedback->IsPending())
+  {
+    // The last frame's footprint asks for pages before this frame uploads what came in.
+    in.Feedback->Collect(in.Footprints);
+    const long long requested = in.Layers->GetPageCache()->GetNumberOfRequestedPages();
+    if (streaming)
+    {
+      in.Layers->RequestPages(in.Footprints, in.Feedback->GetBlockSize(), in.FeedbackGridCell);
+    }
+    in.LastFeedbackAskedForMore =
+      in.Layers->GetPageCache()->GetNumberOfRequestedPages() != requested;
+    in.CollectedView = in.FeedbackView;
+  }
+  in.Layers->UploadTextures(window, this->WaitForPages);
+  double minHeight = in.Layers->GetMinimumHeight();
+  double maxHeight = in.Layers->GetMaximumHeight();
 
   // The primary sphere: the lowest terrain seen in the last frame, unless the camera jumped
   // (moved by more than a quarter of its height over that terrain), or there is none.
@@ -678,10 +704,65 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
 
   vtkOpenGLState::ScopedglViewport viewportSaver(state);
   vtkRenderState renderState(ren);
+  {
+    const double* p = camera->GetPosition();
+    const double* f = camera->GetFocalPoint();
+    const double* u = camera->GetViewUp();
+    in.RenderedView = { p[0], p[1], p[2], f[0], f[1], f[2], u[0], u[1], u[2],
+      camera->GetViewAngle(), static_cast<double>(width), static_cast<double>(height),
+      static_cast<double>(act->GetMTime()) };
+  }
   in.GridPass->Render(&renderState);
   if (!this->RenderGBuffer(ren, act, width, height))
   {
     return;
+  }
+  if (streaming)
+  {
+    // The footprint of this G-buffer: read back by the next frame, or now when waiting.
+    double reference[3] = { 0.0, 0.0, 0.0 };
+    if (in.Layers->GetHighPrecisionGeodetic())
+    {
+      in.Layers->GetReferenceDirection(reference);
+    }
+    in.FeedbackGridCell =
+      static_cast<double>(std::max(width, height)) / std::max(1, in.GridPass->GetResolution() - 1);
+    vtkGlobePageCache* cache = in.Layers->GetPageCache();
+    for (int round = 0; this->WaitForPages && round < 16; ++round)
+    {
+      if (!in.Feedback->Render(window, in.GBuffer, in.GDepth, reference, in.Ellipsoid->GetRadii()))
+      {
+        break;
+      }
+      in.Feedback->Collect(in.Footprints);
+      const long long requested = cache->GetNumberOfRequestedPages();
+      in.Layers->RequestPages(in.Footprints, in.Feedback->GetBlockSize(), in.FeedbackGridCell);
+      if (cache->GetNumberOfRequestedPages() == requested)
+      {
+        break; // everything this frame shows is resident
+      }
+      const long long loaded = cache->GetNumberOfLoadedPages();
+      in.Layers->UploadTextures(window, true);
+      if (cache->GetNumberOfLoadedPages() == loaded)
+      {
+        break; // no room for more: the frame keeps the ancestors
+      }
+      // The new pages may raise the terrain's bounds: the grid is cast again.
+      maxHeight = in.Layers->GetMaximumHeight();
+      minHeight = in.Layers->GetMinimumHeight();
+      in.Grid->Update(camera, act->GetMatrix(), ren->GetTiledAspectRatio(),
+        std::min(primaryHeight, minHeight), maxHeight);
+      in.GridPass->Render(&renderState);
+      if (!this->RenderGBuffer(ren, act, width, height))
+      {
+        return;
+      }
+    }
+    if (!this->WaitForPages)
+    {
+      in.Feedback->Render(window, in.GBuffer, in.GDepth, reference, in.Ellipsoid->GetRadii());
+      in.FeedbackView = in.RenderedView;
+    }
   }
   state->vtkglViewport(viewport[0], viewport[1], width, height);
   this->UpdateLight(ren, act);
@@ -689,6 +770,23 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   in.Composite->Render(&renderState);
   this->LastFrameDrewGlobe = true;
   this->ReduceMinimumRadius(ren, width, height, eye);
+}
+
+//------------------------------------------------------------------------------
+vtkGlobePageCache* vtkGlobeMapper::GetPageCache()
+{
+  return this->Internals->Layers->GetPageCache();
+}
+
+bool vtkGlobeMapper::IsStreamingIdle()
+{
+  auto& in = *this->Internals;
+  if (in.Layers->GetNumberOfStreamedLayers() == 0 || this->WaitForPages)
+  {
+    return true;
+  }
+  return in.Layers->GetPageCache()->IsIdle() && !in.LastFeedbackAskedForMore &&
+    in.CollectedView == in.RenderedView;
 }
 
 //------------------------------------------------------------------------------
@@ -1023,6 +1121,11 @@ void vtkGlobeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GridResolution: " << this->GetGridResolution() << "\n";
   os << indent << "Layers: " << in.Layers->GetNumberOfLayers() << "\n";
   os << indent << "HighPrecisionGeodetic: " << this->GetHighPrecisionGeodetic() << "\n";
+  os << indent << "WaitForPages: " << this->WaitForPages << "\n";
+  os << indent << "PageCache:\n";
+  in.Layers->GetPageCache()->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "PageFeedback:\n";
+  in.Feedback->PrintSelf(os, indent.GetNextIndent());
   double range[2];
   in.GetPlausible(range);
   os << indent << "PlausibleHeightRange: " << range[0] << " .. " << range[1] << " m"

@@ -47,6 +47,7 @@ class vtkGlobeGridPass;
 class vtkGlobeLayer;
 class vtkGlobeLayerSet;
 class vtkGlobeProjectiveGrid;
+class vtkGlobePageCache;
 class vtkTextureObject;
 
 class VTKGLOBERENDERING_EXPORT vtkGlobeMapper : public vtkOpenGLPolyDataMapper
@@ -151,6 +152,28 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Streamed layers (vtkGlobeLayer::IsStreamed; Documentation/streaming.md). Each frame the
+   * mapper samples the G-buffer's footprint (vtkGlobePageFeedback), the layer set turns it
+   * into the pages each streamed layer needs, and the page cache reads them on worker
+   * threads and uploads them within a budget over the next frames; until then a frame shows
+   * the finest resident ancestor. An interactive application renders again while
+   * IsStreamingIdle() is false, to let the picture refine. WaitForPages (default off): each
+   * frame waits until the pages it needs are read and uploaded, and draws the grid again
+   * with them (at most 16 rounds): final pictures in one Render(), for batch images and
+   * tests, at the cost of frame time.
+   */
+  vtkSetMacro(WaitForPages, bool);
+  vtkGetMacro(WaitForPages, bool);
+  vtkBooleanMacro(WaitForPages, bool);
+  /// The GPU page cache: its settings (page size, GPU and CPU memory, upload budget) and
+  /// statistics (pages resident, requested, loaded, evicted; misses; bytes uploaded).
+  vtkGlobePageCache* GetPageCache();
+  /// True when no page is being read or waits for upload (the picture is final).
+  bool IsStreamingIdle();
+  ///@}
+
+  ///@{
   /// The parts of a frame, for inspection, tests and benchmarks.
   vtkGlobeProjectiveGrid* GetProjectiveGrid();
   vtkGlobeGridPass* GetGridPass();
@@ -202,6 +225,7 @@ protected:
   bool PrimaryFromReduction = false;
   double LastVisibleMinimumHeight = 0.0;
   bool LastFrameDrewGlobe = false;
+  bool WaitForPages = false;
 
 private:
   vtkGlobeMapper(const vtkGlobeMapper&) = delete;

@@ -1,0 +1,834 @@
+#include "vtkGlobePageCache.h"
+
+#include "vtkFloatArray.h"
+#include "vtkGlobeLayer.h"
+#include "vtkGlobePageSource.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkSmartPointer.h"
+#include "vtkTextureObject.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
+#include <condition_variable>
+#include <cstring>
+#include <deque>
+#include <map>
+#include <mutex>
+#include <thread>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+vtkStandardNewMacro(vtkGlobePageCache);
+
+namespace
+{
+using PageKey = unsigned long long;
+PageKey MakeKey(int level, int column, int row)
+{
+  return (static_cast<PageKey>(level) << 48) | (static_cast<PageKey>(column) << 24) |
+    static_cast<PageKey>(row);
+}
+int KeyLevel(PageKey k)
+{
+  return static_cast<int>(k >> 48);
+}
+int KeyColumn(PageKey k)
+{
+  return static_cast<int>((k >> 24) & 0xFFFFFF);
+}
+int KeyRow(PageKey k)
+{
+  return static_cast<int>(k & 0xFFFFFF);
+}
+
+// A page read by a worker, waiting for its upload.
+struct Finished
+{
+  int LayerId = 0;
+  PageKey Key = 0;
+  vtkSmartPointer<vtkDataArray> Data;
+  bool Ok = false;
+  float Minimum = 0.0f; // valid heights of the page (Minimum > Maximum: none)
+  float Maximum = -1.0f;
+};
+
+struct Job
+{
+  int LayerId = 0;
+  PageKey Key = 0;
+  vtkSmartPointer<vtkGlobeLayer> Layer;
+  bool Heights = true;
+};
+
+struct Slot
+{
+  int LayerId = -1; // -1: free
+  PageKey Key = 0;
+  long long LastUsed = -1;
+  bool Pinned = false;
+};
+
+struct Atlas
+{
+  unsigned int Handle = 0;
+  vtkSmartPointer<vtkTextureObject> Texture; // wraps Handle for binding
+  unsigned int PixelBuffer = 0;
+  int Texels = 0;
+  std::vector<Slot> Slots;
+  std::vector<int> Free;
+};
+
+struct LayerState
+{
+  int Id = 0;
+  vtkSmartPointer<vtkGlobeLayer> Layer;
+  int Loads = 0;
+  int Kind = 0;
+  int Levels = 0;
+  std::vector<int> Width, Height, Columns, Rows, FirstRow;
+  int TableWidth = 0, TableHeight = 0;
+  vtkSmartPointer<vtkTextureObject> Table;
+  bool TableDirty = true;
+  std::unordered_map<PageKey, int> Resident; // page -> slot
+  double MinimumHeight = 1.0, MaximumHeight = -1.0;
+  bool Listed = false; // composed by the coming frame
+};
+
+void FindRange(vtkDataArray* data, float& lo, float& hi)
+{
+  lo = 1.0f;
+  hi = -1.0f;
+  auto* f = vtkFloatArray::SafeDownCast(data);
+  if (!f)
+  {
+    return;
+  }
+  bool any = false;
+  for (vtkIdType i = 0; i < f->GetNumberOfValues(); ++i)
+  {
+    const float v = f->GetValue(i);
+    if (!std::isnan(v))
+    {
+      lo = any ? std::min(lo, v) : v;
+      hi = any ? std::max(hi, v) : v;
+      any = true;
+    }
+  }
+}
+} // namespace
+
+class vtkGlobePageCache::vtkInternals
+{
+public:
+  // Main thread only.
+  std::map<vtkGlobeLayer*, LayerState> Layers;
+  std::vector<vtkGlobeLayer*> FrameLayers;
+  Atlas Atlases[2];
+  std::unordered_set<PageKey> InFlight[2]; // per kind: (layer id, page) hashed below
+  std::deque<Finished> Waiting;            // read, not uploaded yet
+  std::unordered_set<unsigned long long> TouchedThisFrame;
+  // Pages dropped for want of a free slot: not asked for again until a slot frees up, so a
+  // view that needs more pages than the cache holds settles on what fits.
+  std::unordered_set<unsigned long long> Deferred;
+  long long Frame = 0;
+  int NextId = 1;
+  int AllocatedPageSize = 0;
+  bool ReportedFull = false;
+
+  // Shared with the workers.
+  std::mutex Mutex;
+  std::condition_variable Wake;
+  std::condition_variable Done;
+  std::deque<Job> Queue;
+  std::vector<Finished> Results;
+  int Running = 0;
+  bool Stop = false;
+  std::vector<std::thread> Workers;
+
+  static unsigned long long Tag(int layerId, PageKey key)
+  {
+    // Levels < 64, columns and rows < 2^24: 54 bits; the layer id above them.
+    return (static_cast<unsigned long long>(layerId) << 54) ^ key;
+  }
+
+  LayerState* Find(vtkGlobeLayer* layer)
+  {
+    auto it = this->Layers.find(layer);
+    return it == this->Layers.end() ? nullptr : &it->second;
+  }
+
+  LayerState* FindId(int id)
+  {
+    for (auto& kv : this->Layers)
+    {
+      if (kv.second.Id == id)
+      {
+        return &kv.second;
+      }
+    }
+    return nullptr;
+  }
+
+  void Work()
+  {
+    for (;;)
+    {
+      Job job;
+      {
+        std::unique_lock<std::mutex> lock(this->Mutex);
+        this->Wake.wait(lock, [this] { return this->Stop || !this->Queue.empty(); });
+        if (this->Stop)
+        {
+          return;
+        }
+        // Coarse levels first: they cover the most screen and refine what the finer wait for.
+        auto best = std::max_element(this->Queue.begin(), this->Queue.end(),
+          [](const Job& a, const Job& b) { return KeyLevel(a.Key) < KeyLevel(b.Key); });
+        job = *best;
+        this->Queue.erase(best);
+        ++this->Running;
+      }
+      Finished f;
+      f.LayerId = job.LayerId;
+      f.Key = job.Key;
+      if (job.Heights)
+      {
+        f.Data = vtkSmartPointer<vtkFloatArray>::New();
+      }
+      else
+      {
+        f.Data = vtkSmartPointer<vtkUnsignedCharArray>::New();
+      }
+      f.Ok = job.Layer->ReadPage(KeyLevel(job.Key), KeyColumn(job.Key), KeyRow(job.Key), f.Data);
+      if (f.Ok && job.Heights)
+      {
+        FindRange(f.Data, f.Minimum, f.Maximum);
+      }
+      {
+        std::lock_guard<std::mutex> lock(this->Mutex);
+        this->Results.push_back(std::move(f));
+        --this->Running;
+      }
+      this->Done.notify_all();
+    }
+  }
+
+  void StartWorkers(int count)
+  {
+    if (!this->Workers.empty())
+    {
+      return;
+    }
+    this->Stop = false;
+    for (int i = 0; i < count; ++i)
+    {
+      this->Workers.emplace_back([this] { this->Work(); });
+    }
+  }
+
+  void StopWorkers()
+  {
+    {
+      std::lock_guard<std::mutex> lock(this->Mutex);
+      this->Stop = true;
+      this->Queue.clear();
+    }
+    this->Wake.notify_all();
+    for (auto& t : this->Workers)
+    {
+      t.join();
+    }
+    this->Workers.clear();
+    this->Results.clear();
+  }
+
+  // Cancels queued reads and waits for the running ones (before settings change).
+  void Drain()
+  {
+    std::unique_lock<std::mutex> lock(this->Mutex);
+    this->Queue.clear();
+    this->Done.wait(lock, [this] { return this->Running == 0; });
+    this->Results.clear();
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkGlobePageCache::vtkGlobePageCache()
+  : Internals(new vtkInternals)
+{
+}
+
+vtkGlobePageCache::~vtkGlobePageCache()
+{
+  this->Internals->StopWorkers();
+}
+
+void vtkGlobePageCache::AddFrameLayer(vtkGlobeLayer* layer)
+{
+  if (layer && layer->IsStreamed())
+  {
+    this->Internals->FrameLayers.push_back(layer);
+  }
+}
+
+void vtkGlobePageCache::Flush()
+{
+  auto& in = *this->Internals;
+  in.Drain();
+  in.Waiting.clear();
+  in.Deferred.clear();
+  for (auto& kv : in.Layers)
+  {
+    kv.second.Resident.clear();
+  }
+  in.Layers.clear();
+  for (auto& a : in.Atlases)
+  {
+    for (size_t i = 0; i < a.Slots.size(); ++i)
+    {
+      a.Slots[i] = Slot();
+    }
+    a.Free.clear();
+    for (int i = static_cast<int>(a.Slots.size()) - 1; i >= 0; --i)
+    {
+      a.Free.push_back(i);
+    }
+  }
+  for (auto& f : in.InFlight)
+  {
+    f.clear();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
+{
+  auto& in = *this->Internals;
+  ++in.Frame;
+  in.TouchedThisFrame.clear();
+  this->BytesUploadedLastFrame = 0;
+  in.StartWorkers(this->NumberOfThreads);
+
+  const int texels = this->PageSize + 2 * Border;
+  if (in.AllocatedPageSize != this->PageSize)
+  {
+    this->Flush();
+    this->ReleaseGraphicsResources(window);
+    in.AllocatedPageSize = this->PageSize;
+  }
+
+  // Layers: drop those no longer composed or reloaded since (their slots become free).
+  std::vector<vtkGlobeLayer*> listed;
+  listed.swap(in.FrameLayers);
+  for (auto& kv : in.Layers)
+  {
+    kv.second.Listed = false;
+  }
+  for (vtkGlobeLayer* layer : listed)
+  {
+    LayerState* s = in.Find(layer);
+    if (s && s->Loads == layer->GetNumberOfLoads())
+    {
+      s->Listed = true;
+    }
+  }
+  for (auto it = in.Layers.begin(); it != in.Layers.end();)
+  {
+    if (it->second.Listed)
+    {
+      ++it;
+      continue;
+    }
+    Atlas& atlas = in.Atlases[it->second.Kind];
+    for (auto& page : it->second.Resident)
+    {
+      atlas.Slots[page.second] = Slot();
+      atlas.Free.push_back(page.second);
+    }
+    if (it->second.Table)
+    {
+      it->second.Table->ReleaseGraphicsResources(window);
+    }
+    it = in.Layers.erase(it);
+  }
+
+  // Atlases: allocated at first use, GPUMemory each, no more layers than GL allows.
+  for (int kind = 0; kind < 2; ++kind)
+  {
+    Atlas& a = in.Atlases[kind];
+    if (a.Handle || listed.empty())
+    {
+      continue;
+    }
+    bool used = false;
+    for (vtkGlobeLayer* layer : listed)
+    {
+      used |= (layer->GetRole() == vtkGlobeLayer::Height) == (kind == Heights);
+    }
+    if (!used)
+    {
+      continue;
+    }
+    const double pageBytes = static_cast<double>(texels) * texels * 4.0;
+    GLint maxLayers = 256;
+    glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
+    const int slots = std::max(2,
+      std::min(static_cast<int>(this->GPUMemory * 1048576.0 / pageBytes), static_cast<int>(maxLayers)));
+    a.Texels = texels;
+    glGenTextures(1, &a.Handle);
+    a.Texture = vtkSmartPointer<vtkTextureObject>::New();
+    a.Texture->SetContext(window);
+    a.Texture->AssignToExistingTexture(a.Handle, GL_TEXTURE_2D_ARRAY);
+    a.Texture->SetMinificationFilter(vtkTextureObject::Linear);
+    a.Texture->SetMagnificationFilter(vtkTextureObject::Linear);
+    a.Texture->SetWrapS(vtkTextureObject::ClampToEdge);
+    a.Texture->SetWrapT(vtkTextureObject::ClampToEdge);
+    a.Texture->Activate();
+    glTexStorage3D(GL_TEXTURE_2D_ARRAY, 1, kind == Heights ? GL_R32F : GL_RGBA8, texels, texels, slots);
+    a.Texture->Deactivate();
+    a.Slots.assign(slots, Slot());
+    a.Free.clear();
+    for (int i = slots - 1; i >= 0; --i)
+    {
+      a.Free.push_back(i);
+    }
+    glGenBuffers(1, &a.PixelBuffer);
+  }
+
+  auto upload = [&](LayerState& s, PageKey key, vtkDataArray* data, bool pinned) -> bool {
+    Atlas& a = in.Atlases[s.Kind];
+    if (!a.Handle)
+    {
+      return false;
+    }
+    int slot = -1;
+    if (!a.Free.empty())
+    {
+      slot = a.Free.back();
+      a.Free.pop_back();
+    }
+    else
+    {
+      // The least recently used page that the last frame did not use.
+      long long oldest = in.Frame - 1;
+      for (size_t i = 0; i < a.Slots.size(); ++i)
+      {
+        if (!a.Slots[i].Pinned && a.Slots[i].LastUsed < oldest)
+        {
+          oldest = a.Slots[i].LastUsed;
+          slot = static_cast<int>(i);
+        }
+      }
+      if (slot < 0)
+      {
+        return false;
+      }
+      LayerState* owner = in.FindId(a.Slots[slot].LayerId);
+      if (owner)
+      {
+        owner->Resident.erase(a.Slots[slot].Key);
+        owner->TableDirty = true;
+      }
+      ++this->NumberOfEvictedPages;
+    }
+    const size_t bytes = static_cast<size_t>(a.Texels) * a.Texels * 4;
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, a.PixelBuffer);
+    glBufferData(GL_PIXEL_UNPACK_BUFFER, static_cast<GLsizeiptr>(bytes), nullptr, GL_STREAM_DRAW);
+    if (void* dst = glMapBufferRange(GL_PIXEL_UNPACK_BUFFER, 0, static_cast<GLsizeiptr>(bytes),
+          GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT))
+    {
+      std::memcpy(dst, data->GetVoidPointer(0), bytes);
+      glUnmapBuffer(GL_PIXEL_UNPACK_BUFFER);
+      a.Texture->Activate();
+      glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+      glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, slot, a.Texels, a.Texels, 1,
+        s.Kind == Heights ? GL_RED : GL_RGBA, s.Kind == Heights ? GL_FLOAT : GL_UNSIGNED_BYTE,
+        nullptr);
+      a.Texture->Deactivate();
+    }
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    a.Slots[slot].LayerId = s.Id;
+    a.Slots[slot].Key = key;
+    a.Slots[slot].LastUsed = in.Frame;
+    a.Slots[slot].Pinned = pinned;
+    s.Resident[key] = slot;
+    s.TableDirty = true;
+    ++this->NumberOfLoadedPages;
+    this->BytesUploadedLastFrame += static_cast<long long>(bytes);
+    this->BytesUploaded += static_cast<long long>(bytes);
+    return true;
+  };
+  auto widen = [](LayerState& s, float lo, float hi) {
+    if (lo <= hi)
+    {
+      s.MinimumHeight = s.MinimumHeight <= s.MaximumHeight ? std::min<double>(s.MinimumHeight, lo) : lo;
+      s.MaximumHeight = s.MinimumHeight <= s.MaximumHeight ? std::max<double>(s.MaximumHeight, hi) : hi;
+    }
+  };
+
+  // New layers: their pyramid, and the coarsest page read now (a frame never shows an
+  // undefined texel).
+  for (vtkGlobeLayer* layer : listed)
+  {
+    if (in.Find(layer))
+    {
+      continue;
+    }
+    vtkGlobePageSource* pages = layer->GetPageSource();
+    // Safe: no worker reads a layer that is not registered.
+    pages->SetPageSize(this->PageSize);
+    pages->SetBorder(Border);
+    pages->SetCacheMemory(this->CPUMemory);
+    LayerState s;
+    s.Id = in.NextId++;
+    s.Layer = layer;
+    s.Loads = layer->GetNumberOfLoads();
+    s.Kind = layer->GetRole() == vtkGlobeLayer::Height ? Heights : Images;
+    s.Levels = pages->GetNumberOfLevels();
+    if (s.Levels <= 0 || s.Levels > 63)
+    {
+      continue; // the page source reported why
+    }
+    int firstRow = 1;
+    for (int l = 0; l < s.Levels; ++l)
+    {
+      int size[2], count[2];
+      pages->GetLevelSize(l, size);
+      pages->GetNumberOfPages(l, count);
+      s.Width.push_back(size[0]);
+      s.Height.push_back(size[1]);
+      s.Columns.push_back(count[0]);
+      s.Rows.push_back(count[1]);
+      s.FirstRow.push_back(firstRow);
+      firstRow += count[1];
+    }
+    s.TableWidth = std::max(s.Levels, s.Columns[0]);
+    s.TableHeight = firstRow;
+    vtkSmartPointer<vtkDataArray> coarsest;
+    if (s.Kind == Heights)
+    {
+      coarsest = vtkSmartPointer<vtkFloatArray>::New();
+    }
+    else
+    {
+      coarsest = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    }
+    if (!layer->ReadPage(s.Levels - 1, 0, 0, coarsest))
+    {
+      continue;
+    }
+    LayerState& stored = in.Layers[layer] = std::move(s);
+    stored.Listed = true;
+    if (!upload(stored, MakeKey(stored.Levels - 1, 0, 0), coarsest, true))
+    {
+      if (!in.ReportedFull)
+      {
+        vtkErrorMacro(<< "The GPU page cache has no room for the coarsest page of layer '"
+                      << layer->GetName() << "' (" << this->GetNumberOfSlots(stored.Kind)
+                      << " slots, all pinned); raise GPUMemory");
+        in.ReportedFull = true;
+      }
+      in.Layers.erase(layer);
+      continue;
+    }
+    float lo, hi;
+    FindRange(coarsest, lo, hi);
+    widen(stored, lo, hi);
+  }
+
+  // A slot that the last frame did not use frees the deferred pages to be asked for again.
+  for (const Atlas& a : in.Atlases)
+  {
+    bool room = !a.Free.empty();
+    for (size_t i = 0; i < a.Slots.size() && !room; ++i)
+    {
+      room = !a.Slots[i].Pinned && a.Slots[i].LastUsed < in.Frame - 1;
+    }
+    if (room)
+    {
+      in.Deferred.clear();
+      break;
+    }
+  }
+
+  // Finished reads: waited for in complete mode; uploaded within the budget.
+  if (wait)
+  {
+    std::unique_lock<std::mutex> lock(in.Mutex);
+    in.Done.wait(lock, [&in] { return in.Queue.empty() && in.Running == 0; });
+  }
+  {
+    std::lock_guard<std::mutex> lock(in.Mutex);
+    for (auto& f : in.Results)
+    {
+      in.Waiting.push_back(std::move(f));
+    }
+    in.Results.clear();
+  }
+  // Coarse pages first: each is the fallback of four finer ones, so when the slots run out the
+  // frame still shows a level within one of what it asked for.
+  std::stable_sort(in.Waiting.begin(), in.Waiting.end(),
+    [](const Finished& a, const Finished& b) { return KeyLevel(a.Key) > KeyLevel(b.Key); });
+  const double budget = wait || this->UploadBudget <= 0.0 ? 1e300 : this->UploadBudget * 1048576.0;
+  while (!in.Waiting.empty() && this->BytesUploadedLastFrame < budget)
+  {
+    Finished f = std::move(in.Waiting.front());
+    in.Waiting.pop_front();
+    LayerState* s = in.FindId(f.LayerId);
+    if (!s)
+    {
+      continue; // its layer went away or reloaded
+    }
+    in.InFlight[s->Kind].erase(vtkInternals::Tag(f.LayerId, f.Key));
+    if (!f.Ok || s->Resident.count(f.Key))
+    {
+      continue;
+    }
+    if (!upload(*s, f.Key, f.Data, false))
+    {
+      // Every slot holds a page the last frame used: the frame keeps the ancestor.
+      ++this->NumberOfDeferredPages;
+      in.Deferred.insert(vtkInternals::Tag(f.LayerId, f.Key));
+      continue;
+    }
+    widen(*s, f.Minimum, f.Maximum);
+  }
+
+  // Page tables of layers whose residency changed.
+  const int P = this->PageSize;
+  for (auto& kv : in.Layers)
+  {
+    LayerState& s = kv.second;
+    if (!s.TableDirty && s.Table && s.Table->GetContext() == window)
+    {
+      continue;
+    }
+    std::vector<float> table(static_cast<size_t>(s.TableWidth) * s.TableHeight * 4, -1.0f);
+    for (int l = 0; l < s.Levels; ++l)
+    {
+      float* t = &table[4 * static_cast<size_t>(l)];
+      t[0] = static_cast<float>(s.Width[l]);
+      t[1] = static_cast<float>(s.Height[l]);
+      t[2] = static_cast<float>(s.FirstRow[l]);
+      t[3] = static_cast<float>(s.Columns[l]);
+    }
+    // Coarse to fine: a page that is not resident takes the entry of the page one level up
+    // that holds its centre.
+    for (int l = s.Levels - 1; l >= 0; --l)
+    {
+      for (int r = 0; r < s.Rows[l]; ++r)
+      {
+        for (int c = 0; c < s.Columns[l]; ++c)
+        {
+          float* t = &table[4 * (static_cast<size_t>(s.FirstRow[l] + r) * s.TableWidth + c)];
+          auto it = s.Resident.find(MakeKey(l, c, r));
+          if (it != s.Resident.end())
+          {
+            t[0] = static_cast<float>(it->second);
+            t[1] = static_cast<float>(l);
+            t[2] = static_cast<float>(c);
+            t[3] = static_cast<float>(r);
+            continue;
+          }
+          if (l + 1 >= s.Levels)
+          {
+            continue; // unreachable: the coarsest page is pinned
+          }
+          const double u = std::min((c + 0.5) * P / s.Width[l], 1.0 - 1e-9);
+          const double v = std::min((r + 0.5) * P / s.Height[l], 1.0 - 1e-9);
+          const int pc = std::min(static_cast<int>(u * s.Width[l + 1] / P), s.Columns[l + 1] - 1);
+          const int pr = std::min(static_cast<int>(v * s.Height[l + 1] / P), s.Rows[l + 1] - 1);
+          const float* up =
+            &table[4 * (static_cast<size_t>(s.FirstRow[l + 1] + pr) * s.TableWidth + pc)];
+          std::copy(up, up + 4, t);
+        }
+      }
+    }
+    if (!s.Table)
+    {
+      s.Table = vtkSmartPointer<vtkTextureObject>::New();
+    }
+    s.Table->SetContext(window);
+    s.Table->SetMinificationFilter(vtkTextureObject::Nearest);
+    s.Table->SetMagnificationFilter(vtkTextureObject::Nearest);
+    s.Table->SetWrapS(vtkTextureObject::ClampToEdge);
+    s.Table->SetWrapT(vtkTextureObject::ClampToEdge);
+    s.Table->Create2DFromRaw(s.TableWidth, s.TableHeight, 4, VTK_FLOAT, table.data());
+    s.TableDirty = false;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkGlobePageCache::Request(vtkGlobeLayer* layer, int level, int column, int row)
+{
+  auto& in = *this->Internals;
+  LayerState* s = in.Find(layer);
+  if (!s || level < 0 || level >= s->Levels || column < 0 || column >= s->Columns[level] ||
+    row < 0 || row >= s->Rows[level])
+  {
+    return;
+  }
+  const PageKey key = MakeKey(level, column, row);
+  const unsigned long long tag = vtkInternals::Tag(s->Id, key);
+  if (!in.TouchedThisFrame.insert(tag).second)
+  {
+    return; // counted already this frame
+  }
+  auto it = s->Resident.find(key);
+  if (it != s->Resident.end())
+  {
+    in.Atlases[s->Kind].Slots[it->second].LastUsed = in.Frame;
+    ++this->NumberOfHits;
+    return;
+  }
+  ++this->NumberOfMisses;
+  if (in.Deferred.count(tag) || !in.InFlight[s->Kind].insert(tag).second)
+  {
+    return;
+  }
+  ++this->NumberOfRequestedPages;
+  {
+    std::lock_guard<std::mutex> lock(in.Mutex);
+    in.Queue.push_back(Job{ s->Id, key, s->Layer, s->Kind == Heights });
+  }
+  in.Wake.notify_one();
+}
+
+bool vtkGlobePageCache::IsIdle()
+{
+  auto& in = *this->Internals;
+  std::lock_guard<std::mutex> lock(in.Mutex);
+  return in.Queue.empty() && in.Running == 0 && in.Results.empty() && in.Waiting.empty();
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkGlobePageCache::GetAtlas(int kind)
+{
+  return kind == Heights || kind == Images ? this->Internals->Atlases[kind].Texture.Get() : nullptr;
+}
+
+vtkTextureObject* vtkGlobePageCache::GetTable(vtkGlobeLayer* layer)
+{
+  LayerState* s = this->Internals->Find(layer);
+  return s ? s->Table.Get() : nullptr;
+}
+
+int vtkGlobePageCache::GetNumberOfLevels(vtkGlobeLayer* layer)
+{
+  LayerState* s = this->Internals->Find(layer);
+  return s ? s->Levels : 0;
+}
+
+bool vtkGlobePageCache::GetLoadedHeightRange(vtkGlobeLayer* layer, double range[2])
+{
+  LayerState* s = this->Internals->Find(layer);
+  if (!s || s->MinimumHeight > s->MaximumHeight)
+  {
+    return false;
+  }
+  range[0] = s->MinimumHeight;
+  range[1] = s->MaximumHeight;
+  return true;
+}
+
+int vtkGlobePageCache::GetNumberOfResidentPages()
+{
+  int n = 0;
+  for (auto& kv : this->Internals->Layers)
+  {
+    n += static_cast<int>(kv.second.Resident.size());
+  }
+  return n;
+}
+
+int vtkGlobePageCache::GetNumberOfSlots(int kind)
+{
+  return kind == Heights || kind == Images
+    ? static_cast<int>(this->Internals->Atlases[kind].Slots.size())
+    : 0;
+}
+
+size_t vtkGlobePageCache::GetGPUMemoryUsed()
+{
+  size_t bytes = 0;
+  for (auto& a : this->Internals->Atlases)
+  {
+    bytes += a.Slots.size() * static_cast<size_t>(a.Texels) * a.Texels * 4;
+  }
+  for (auto& kv : this->Internals->Layers)
+  {
+    bytes += static_cast<size_t>(kv.second.TableWidth) * kv.second.TableHeight * 16;
+  }
+  return bytes;
+}
+
+long long vtkGlobePageCache::GetCPUMemoryUsed()
+{
+  long long bytes = 0;
+  for (auto& kv : this->Internals->Layers)
+  {
+    bytes += kv.second.Layer->GetPageSource()->GetCacheMemoryUsed();
+  }
+  return bytes;
+}
+
+void vtkGlobePageCache::ResetStatistics()
+{
+  this->NumberOfRequestedPages = this->NumberOfLoadedPages = this->NumberOfEvictedPages = 0;
+  this->NumberOfMisses = this->NumberOfHits = this->NumberOfDeferredPages = 0;
+  this->BytesUploadedLastFrame = this->BytesUploaded = 0;
+}
+
+void vtkGlobePageCache::ReleaseGraphicsResources(vtkWindow* window)
+{
+  auto& in = *this->Internals;
+  // The tables and slots describe GPU state: they go with it.
+  in.Drain();
+  in.Waiting.clear();
+  for (auto& f : in.InFlight)
+  {
+    f.clear();
+  }
+  for (auto& kv : in.Layers)
+  {
+    if (kv.second.Table)
+    {
+      kv.second.Table->ReleaseGraphicsResources(window);
+    }
+  }
+  in.Layers.clear();
+  for (auto& a : in.Atlases)
+  {
+    if (a.Handle)
+    {
+      a.Texture->ReleaseGraphicsResources(window);
+      glDeleteTextures(1, &a.Handle);
+      glDeleteBuffers(1, &a.PixelBuffer);
+    }
+    a = Atlas();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkGlobePageCache::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "PageSize: " << this->PageSize << " (+" << Border << " border)\n";
+  os << indent << "GPUMemory: " << this->GPUMemory << " MiB per kind\n";
+  os << indent << "CPUMemory: " << this->CPUMemory << " MiB per layer\n";
+  os << indent << "UploadBudget: " << this->UploadBudget << " MiB per frame\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "Slots: " << this->GetNumberOfSlots(Heights) << " height, "
+     << this->GetNumberOfSlots(Images) << " image\n";
+  os << indent << "ResidentPages: " << this->GetNumberOfResidentPages() << "\n";
+  os << indent << "Requested/Loaded/Evicted/Deferred pages: " << this->NumberOfRequestedPages
+     << " / " << this->NumberOfLoadedPages << " / " << this->NumberOfEvictedPages << " / "
+     << this->NumberOfDeferredPages << "\n";
+  os << indent << "Hits/Misses: " << this->NumberOfHits << " / " << this->NumberOfMisses << "\n";
+  os << indent << "BytesUploaded: " << this->BytesUploaded << " (last frame "
+     << this->BytesUploadedLastFrame << ")\n";
+}

@@ -1,0 +1,332 @@
+// GlobeStreamingBenchmark: what streaming costs (after Kooima's thesis, section 5.1). A scripted
+// flight from a whole-Earth view down to a close-up of Mount Rainier and back, starting with an
+// empty cache, over global height and imagery layers (GlobeMakePlanet's) plus the real 90 m
+// Rainier inset; each data set given runs streamed, and those small enough also in-core, in
+// the same process, with the same camera path. A program, not a test: it prints a table and
+// writes JSON; Utilities/plot_streaming.py plots it (`bash Utilities/globe.sh bench-streaming`).
+//
+//   GlobeStreamingBenchmark --data DATA_DIR --planet WIDTH:HEIGHTS.tif:IMAGERY.tif ...
+//       [--frames 240] [--window 640x480] [--grid 256] [--gpu 128] [--incore-max 8192]
+//       [--json PATH]
+//
+// Per block of 10 frames: median frame time (Render + glFinish, wall clock); pages loaded and
+// evicted and bytes uploaded in the block; CPU memory (VmRSS) and GPU layer memory
+// (vtkGlobeLayerSet::GetTextureMemory: textures, or page atlases and tables) at its end; and,
+// for a streamed run whose data also ran in-core, the mean absolute RGB difference of the
+// block's last frame from the in-core frame (0..255). Also: the first frame's time, and the
+// steady frame time (median over the second half of each leg's last third, when the cache has
+// settled). Frames never wait for pages (vtkGlobeMapper::WaitForPages off): the picture
+// refines over the following frames, as in an interactive application.
+#include "vtkGlobeRenderingTestHelpers.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkGlobeEllipsoid.h"
+#include "vtkGlobeLayer.h"
+#include "vtkGlobeLayerSet.h"
+#include "vtkGlobeMapper.h"
+#include "vtkGlobePageCache.h"
+#include "vtkGlobeRasterReader.h"
+#include "vtkNew.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+struct Planet
+{
+  int Width = 0;
+  std::string Heights, Imagery;
+};
+
+struct Block
+{
+  int Frame = 0;
+  double Ms = 0, Altitude = 0;
+  long long Loaded = 0, Evicted = 0, Uploaded = 0;
+  double RSS = 0, GPU = 0, Error = -1;
+};
+
+struct Run
+{
+  std::string Label, Mode;
+  int Width = 0;
+  double FirstMs = 0, SteadyMs = 0, PeakRSS = 0, PeakGPU = 0;
+  std::vector<Block> Blocks;
+  std::vector<double> Frames;
+};
+
+double RSSMiB()
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+  {
+    if (line.rfind("VmRSS:", 0) == 0)
+    {
+      return std::stod(line.substr(6)) / 1024.0;
+    }
+  }
+  return 0;
+}
+
+double Median(std::vector<double> v)
+{
+  if (v.empty())
+  {
+    return 0;
+  }
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+// The camera at frame i of n: down from 20,000 km over Rainier to 6 km above its flank, looking
+// at the summit (altitude log-linear, tilt growing near the ground), then back up.
+void Place(vtkRenderer* renderer, vtkGlobeEllipsoid* body, int i, int n, double& altitude)
+{
+  const double half = 0.5 * (n - 1);
+  const double t = i <= half ? i / half : (n - 1 - i) / half; // 0 far .. 1 near
+  altitude = std::exp(std::log(2.0e7) + t * (std::log(6000.0) - std::log(2.0e7)));
+  const double summit[3] = { -121.7603, 46.8523, 4392.0 };
+  // Offset south-west with height, so the close-up looks across the mountain.
+  const double back = std::min(1.0, altitude / 40000.0);
+  const double camera[3] = { summit[0] - 0.25 * (1.0 - back), summit[1] - 0.2 * (1.0 - back),
+    altitude + (1.0 - back) * 2000.0 };
+  vtkGlobeTest::LookAt(renderer, body, camera, summit, 40.0);
+  renderer->ResetCameraClippingRange();
+}
+
+Run Fly(const std::string& data, const Planet& planet, bool streamed, int frames, int w, int h,
+  int grid, double gpu, const std::vector<std::vector<unsigned char>>* reference,
+  std::vector<std::vector<unsigned char>>* keep)
+{
+  Run run;
+  run.Width = planet.Width;
+  run.Mode = streamed ? "streamed" : "in-core";
+  run.Label = run.Mode + " " + std::to_string(planet.Width);
+  vtkNew<vtkGlobeEllipsoid> body;
+  vtkNew<vtkGlobeMapper> mapper;
+  mapper->SetEllipsoid(body);
+  mapper->SetGridResolution(grid);
+  mapper->GetPageCache()->SetGPUMemory(gpu);
+  auto add = [&](const std::string& file, bool height) {
+    auto layer = vtkSmartPointer<vtkGlobeLayer>::New();
+    layer->SetFileName(file.c_str());
+    if (height)
+    {
+      layer->SetRoleToHeight();
+    }
+    else
+    {
+      layer->SetRoleToColor();
+    }
+    layer->SetStreaming(streamed ? vtkGlobeLayer::StreamingOn : vtkGlobeLayer::StreamingOff);
+    layer->GetFileReader()->SetMaximumMemory(16384);
+    mapper->AddLayer(layer);
+  };
+  add(planet.Heights, true);
+  add(data + "/earth/mt_rainier_90m.tif", true);
+  add(planet.Imagery, false);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(w, h);
+  window->AddRenderer(renderer);
+  vtkGlobePageCache* cache = mapper->GetPageCache();
+  Block block;
+  std::vector<double> times;
+  long long loaded = 0, evicted = 0, uploaded = 0;
+  for (int i = 0; i < frames; ++i)
+  {
+    double altitude = 0;
+    Place(renderer, body, i, frames, altitude);
+    const auto start = std::chrono::steady_clock::now();
+    window->Render();
+    glFinish();
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    run.Frames.push_back(ms);
+    if (i == 0)
+    {
+      run.FirstMs = ms;
+    }
+    times.push_back(ms);
+    if (i % 10 == 9 || i + 1 == frames)
+    {
+      block.Frame = i + 1;
+      block.Ms = Median(times);
+      block.Altitude = altitude;
+      block.Loaded = cache->GetNumberOfLoadedPages() - loaded;
+      block.Evicted = cache->GetNumberOfEvictedPages() - evicted;
+      block.Uploaded = cache->GetBytesUploaded() - uploaded;
+      loaded = cache->GetNumberOfLoadedPages();
+      evicted = cache->GetNumberOfEvictedPages();
+      uploaded = cache->GetBytesUploaded();
+      block.RSS = RSSMiB();
+      block.GPU = mapper->GetLayerSet()->GetTextureMemory() / 1048576.0;
+      run.PeakRSS = std::max(run.PeakRSS, block.RSS);
+      run.PeakGPU = std::max(run.PeakGPU, block.GPU);
+      unsigned char* pixels = window->GetPixelData(0, 0, w - 1, h - 1, 1);
+      std::vector<unsigned char> image(pixels, pixels + 3 * w * h);
+      delete[] pixels;
+      const size_t index = static_cast<size_t>(i / 10);
+      if (reference && index < reference->size())
+      {
+        double sum = 0;
+        for (size_t k = 0; k < image.size(); ++k)
+        {
+          sum += std::abs(static_cast<int>(image[k]) - static_cast<int>((*reference)[index][k]));
+        }
+        block.Error = sum / image.size();
+      }
+      if (keep)
+      {
+        keep->push_back(std::move(image));
+      }
+      run.Blocks.push_back(block);
+      times.clear();
+    }
+  }
+  // Steady: the middle of the flight (the close-up, cache warm) and the last sixth (far, warm).
+  std::vector<double> steady(run.Frames.begin() + frames * 5 / 12, run.Frames.begin() + frames * 7 / 12);
+  steady.insert(steady.end(), run.Frames.end() - frames / 6, run.Frames.end());
+  run.SteadyMs = Median(steady);
+  return run;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  std::string data, json;
+  std::vector<Planet> planets;
+  int frames = 240, w = 640, h = 480, grid = 256, incoreMax = 8192;
+  double gpu = 128.0;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto next = [&]() { return i + 1 < argc ? std::string(argv[++i]) : std::string(); };
+    if (arg == "--data")
+    {
+      data = next();
+    }
+    else if (arg == "--planet")
+    {
+      std::stringstream s(next());
+      Planet p;
+      std::string width;
+      std::getline(s, width, ':');
+      std::getline(s, p.Heights, ':');
+      std::getline(s, p.Imagery, ':');
+      p.Width = std::atoi(width.c_str());
+      planets.push_back(p);
+    }
+    else if (arg == "--frames")
+    {
+      frames = std::max(20, std::atoi(next().c_str()));
+    }
+    else if (arg == "--window")
+    {
+      std::sscanf(next().c_str(), "%dx%d", &w, &h);
+    }
+    else if (arg == "--grid")
+    {
+      grid = std::atoi(next().c_str());
+    }
+    else if (arg == "--gpu")
+    {
+      gpu = std::atof(next().c_str());
+    }
+    else if (arg == "--incore-max")
+    {
+      incoreMax = std::atoi(next().c_str());
+    }
+    else if (arg == "--json")
+    {
+      json = next();
+    }
+    else
+    {
+      std::fprintf(stderr,
+        "usage: GlobeStreamingBenchmark --data DIR --planet WIDTH:HEIGHTS:IMAGERY ... [--frames N] "
+        "[--window WxH] [--grid N] [--gpu MiB] [--incore-max W] [--json PATH]\n");
+      return 2;
+    }
+  }
+  if (data.empty() || planets.empty())
+  {
+    std::fprintf(stderr, "GlobeStreamingBenchmark: --data and at least one --planet are needed\n");
+    return 2;
+  }
+  std::vector<Run> runs;
+  for (const Planet& p : planets)
+  {
+    std::vector<std::vector<unsigned char>> incoreImages;
+    const bool incore = p.Width <= incoreMax;
+    if (incore)
+    {
+      runs.push_back(Fly(data, p, false, frames, w, h, grid, gpu, nullptr, &incoreImages));
+      std::printf("%-16s first %7.0f ms, steady %6.1f ms, peak RSS %6.0f MiB, GPU %6.1f MiB\n",
+        runs.back().Label.c_str(), runs.back().FirstMs, runs.back().SteadyMs, runs.back().PeakRSS,
+        runs.back().PeakGPU);
+    }
+    runs.push_back(Fly(data, p, true, frames, w, h, grid, gpu, incore ? &incoreImages : nullptr, nullptr));
+    const Run& r = runs.back();
+    std::printf("%-16s first %7.0f ms, steady %6.1f ms, peak RSS %6.0f MiB, GPU %6.1f MiB\n",
+      r.Label.c_str(), r.FirstMs, r.SteadyMs, r.PeakRSS, r.PeakGPU);
+    std::printf("  %6s %10s %8s %7s %7s %9s %8s %8s %6s\n", "frames", "altitude", "ms", "loaded",
+      "evicted", "uploaded", "RSS", "GPU", "error");
+    for (const Block& b : r.Blocks)
+    {
+      std::printf("  %6d %10.0f %8.1f %7lld %7lld %8.1fM %7.0fM %7.1fM %6s\n", b.Frame, b.Altitude,
+        b.Ms, b.Loaded, b.Evicted, b.Uploaded / 1048576.0, b.RSS, b.GPU,
+        b.Error < 0 ? "-" : std::to_string(b.Error).substr(0, 5).c_str());
+    }
+  }
+  if (!json.empty())
+  {
+    std::ofstream out(json);
+    out << "{\"benchmark\": \"GlobeStreamingBenchmark\", \"frames\": " << frames
+        << ", \"window\": [" << w << ", " << h << "], \"grid\": " << grid << ", \"gpu_cache_mib\": " << gpu
+        << ", \"gl_renderer\": \"" << reinterpret_cast<const char*>(glGetString(GL_RENDERER)) << "\", \"runs\": [";
+    for (size_t i = 0; i < runs.size(); ++i)
+    {
+      const Run& r = runs[i];
+      out << (i ? ", " : "") << "{\"label\": \"" << r.Label << "\", \"mode\": \"" << r.Mode
+          << "\", \"width\": " << r.Width << ", \"first_ms\": " << r.FirstMs
+          << ", \"steady_ms\": " << r.SteadyMs << ", \"peak_rss_mib\": " << r.PeakRSS
+          << ", \"peak_gpu_mib\": " << r.PeakGPU << ", \"frame_ms\": [";
+      for (size_t k = 0; k < r.Frames.size(); ++k)
+      {
+        out << (k ? ", " : "") << r.Frames[k];
+      }
+      out << "], \"blocks\": [";
+      for (size_t k = 0; k < r.Blocks.size(); ++k)
+      {
+        const Block& b = r.Blocks[k];
+        out << (k ? ", " : "") << "{\"frame\": " << b.Frame << ", \"altitude_m\": " << b.Altitude
+            << ", \"ms\": " << b.Ms << ", \"loaded\": " << b.Loaded << ", \"evicted\": " << b.Evicted
+            << ", \"uploaded_bytes\": " << b.Uploaded << ", \"rss_mib\": " << b.RSS
+            << ", \"gpu_mib\": " << b.GPU << ", \"error\": " << (b.Error < 0 ? std::string("null") : std::to_string(b.Error))
+            << "}";
+      }
+      out << "]}";
+    }
+    out << "]}\n";
+    std::printf("wrote %s\n", json.c_str());
+  }
+  return 0;
+}

@@ -1,0 +1,358 @@
+// Streamed layers (issue "Planetary-scale data", Documentation/streaming.md): a self-encoding
+// raster (each texel's colour is its own index) streamed through a GPU page cache of 8 pages
+// of 64^2. Every frame, from the first, shows only texels of the raster (no undefined texel);
+// once refinement settles, every pixel shows the texel at its (lon, lat) of a level within
+// one of its ideal footprint level (0 wrong), across page borders and the antimeridian; a
+// camera move that needs no new page loads none; the GPU memory stays within the cache; and a
+// raster many times larger than the caches streams with bounded RSS.
+#include "vtkGlobeRenderingTestHelpers.h"
+#include "vtkGlobeTestHelpers.h"
+
+#include "vtkFloatArray.h"
+#include "vtkGlobeLayerSet.h"
+#include "vtkGlobePageCache.h"
+#include "vtkGlobePageSource.h"
+#include "vtkImageData.h"
+#include "vtkPNGWriter.h"
+#include "vtkPointData.h"
+#include "vtkTIFFWriter.h"
+
+#include <fstream>
+
+namespace
+{
+vtkGlobeTest::Checklist Checks;
+const std::string Temp = VTKGLOBE_TEMP_DIR;
+
+// A global image in plate carree with a world file (.pgw / .tfw) in degrees: WGS 84.
+void WriteWorldFile(const std::string& path, int w, int h)
+{
+  std::ofstream f(path);
+  f.precision(17);
+  f << 360.0 / w << "\n0\n0\n" << -180.0 / h << "\n" << -180.0 + 180.0 / w << "\n"
+    << 90.0 - 90.0 / h << "\n";
+}
+
+// Texel (x, y), y from the north, encodes itself: R = x mod 256, G = y mod 256, B = the rest.
+std::array<int, 3> Code(int x, int y)
+{
+  return { x & 255, y & 255, (x >> 8) | ((y >> 8) << 4) };
+}
+
+std::string WriteSelfEncoding(int w, int h)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(w, h, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* p = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      // VTK images are stored south first.
+      const std::array<int, 3> c = Code(x, h - 1 - y);
+      for (int k = 0; k < 3; ++k)
+      {
+        p[3 * (static_cast<size_t>(y) * w + x) + k] = static_cast<unsigned char>(c[k]);
+      }
+    }
+  }
+  const std::string path = Temp + "/streaming_self_encoding.png";
+  std::remove(path.c_str());
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName(path.c_str());
+  writer->Write();
+  WriteWorldFile(Temp + "/streaming_self_encoding.pgw", w, h);
+  return path;
+}
+
+// Every level of a page source, north-up RGBA, assembled from its pages.
+struct Levels
+{
+  std::vector<int> W, H;
+  std::vector<std::vector<unsigned char>> RGBA;
+};
+
+Levels ReadLevels(const std::string& path, int pageSize)
+{
+  vtkNew<vtkGlobePageSource> source;
+  source->SetFileName(path.c_str());
+  source->SetPageSize(pageSize);
+  source->SetBorder(0);
+  Levels levels;
+  for (int l = 0; l < source->GetNumberOfLevels(); ++l)
+  {
+    int size[2], count[2];
+    source->GetLevelSize(l, size);
+    source->GetNumberOfPages(l, count);
+    levels.W.push_back(size[0]);
+    levels.H.push_back(size[1]);
+    std::vector<unsigned char> rgba(static_cast<size_t>(size[0]) * size[1] * 4);
+    for (int r = 0; r < count[1]; ++r)
+    {
+      for (int c = 0; c < count[0]; ++c)
+      {
+        vtkNew<vtkUnsignedCharArray> page;
+        source->ReadPage(l, c, r, page);
+        for (int j = 0; j < pageSize && r * pageSize + j < size[1]; ++j)
+        {
+          for (int i = 0; i < pageSize && c * pageSize + i < size[0]; ++i)
+          {
+            const size_t to = 4 * (static_cast<size_t>(r * pageSize + j) * size[0] + c * pageSize + i);
+            std::copy_n(page->GetPointer(4 * (j * pageSize + i)), 4, &rgba[to]);
+          }
+        }
+      }
+    }
+    levels.RGBA.push_back(std::move(rgba));
+  }
+  return levels;
+}
+
+struct FrameCheck
+{
+  int Covered = 0;
+  int Undefined = 0; // matches no texel of any level near its position
+  int WrongLevel = 0; // matches none of the levels within one of the ideal
+  int Coarse = 0;     // matches only a coarser level (refinement still to come)
+};
+
+// Each covered pixel against the texels at its (lon, lat): any level (undefined otherwise),
+// and the levels within one of its ideal level, from its footprint to its neighbours.
+FrameCheck CheckFrame(vtkGlobeTest::Scene& scene, const Levels& levels)
+{
+  FrameCheck result;
+  const int* size = scene.Window->GetSize();
+  const std::vector<unsigned char> rgb = vtkGlobeTest::ReadPixels(scene.Window);
+  const std::vector<float> depth = vtkGlobeTest::ReadDepth(scene.Window);
+  const std::vector<float> g = vtkGlobeTest::ReadTexture(scene.Mapper->GetGBufferTexture());
+  const int W = size[0], H = size[1];
+  std::vector<std::array<double, 2>> uv(static_cast<size_t>(W) * H, { NAN, NAN });
+  for (size_t i = 0; i < uv.size(); ++i)
+  {
+    if (depth[i] < 1.0f)
+    {
+      double p[3], llh[3];
+      vtkGlobeTest::GBufferPoint(scene, &g[4 * i], false, p);
+      scene.Body->CartesianToGeodetic(p, llh);
+      uv[i] = { (llh[0] + 180.0) / 360.0, (90.0 - llh[1]) / 180.0 };
+      uv[i][0] -= std::floor(uv[i][0]);
+    }
+  }
+  const int n = static_cast<int>(levels.W.size());
+  for (int y = 0; y + 1 < H; ++y)
+  {
+    for (int x = 0; x + 1 < W; ++x)
+    {
+      const size_t i = static_cast<size_t>(y) * W + x;
+      const size_t ix = i + 1, iy = i + W;
+      if (!(depth[i] < 1.0f && depth[ix] < 1.0f && depth[iy] < 1.0f))
+      {
+        continue;
+      }
+      ++result.Covered;
+      // The footprint in level-0 texels, as OpenGL measures it (the larger axis).
+      auto d = [&](size_t j, int k) {
+        double v = uv[j][k] - uv[i][k];
+        return k == 0 ? v - std::floor(v + 0.5) : v;
+      };
+      const double rho = std::max(std::hypot(d(ix, 0) * levels.W[0], d(ix, 1) * levels.H[0]),
+        std::hypot(d(iy, 0) * levels.W[0], d(iy, 1) * levels.H[0]));
+      const int ideal = std::clamp(static_cast<int>(std::floor(std::log2(std::max(rho, 1e-9)) + 0.5)), 0, n - 1);
+      int matched = -1;
+      for (int l = 0; l < n && matched < 0; ++l)
+      {
+        // The texel at the pixel centre, or a neighbour when the centre is within 2 % of a
+        // texel of its edge (float G-buffer against the GPU's own coordinates).
+        const double tx = uv[i][0] * levels.W[l], ty = uv[i][1] * levels.H[l];
+        for (int dy = -1; dy <= 1 && matched < 0; ++dy)
+        {
+          for (int dx = -1; dx <= 1 && matched < 0; ++dx)
+          {
+            const double ex = tx + 0.02 * dx, ey = ty + 0.02 * dy;
+            const int cx = (static_cast<int>(std::floor(ex)) % levels.W[l] + levels.W[l]) % levels.W[l];
+            const int cy = std::clamp(static_cast<int>(std::floor(ey)), 0, levels.H[l] - 1);
+            const unsigned char* t = &levels.RGBA[l][4 * (static_cast<size_t>(cy) * levels.W[l] + cx)];
+            if (t[0] == rgb[3 * i] && t[1] == rgb[3 * i + 1] && t[2] == rgb[3 * i + 2])
+            {
+              matched = l;
+            }
+          }
+        }
+      }
+      if (matched < 0)
+      {
+        ++result.Undefined;
+      }
+      else if (std::abs(matched - ideal) > 1)
+      {
+        ++result.WrongLevel;
+        result.Coarse += matched > ideal ? 1 : 0;
+      }
+    }
+  }
+  return result;
+}
+
+long ResidentKiB()
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+  {
+    if (line.rfind("VmRSS:", 0) == 0)
+    {
+      return std::stol(line.substr(6));
+    }
+  }
+  return 0;
+}
+
+// A 8192 x 4096 float raster (128 MiB) with a world file, streamed through caches of 4 MiB
+// (GPU) and 16 MiB (CPU) over a flight: RSS stays bounded.
+void MemoryBound()
+{
+  const int w = 8192, h = 4096;
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(w, h, 1);
+  image->AllocateScalars(VTK_FLOAT, 1);
+  auto* v = static_cast<float*>(image->GetScalarPointer());
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      v[static_cast<size_t>(y) * w + x] = static_cast<float>(
+        2000.0 * std::sin(x * 0.013) * std::cos(y * 0.021) + 100.0 * ((x * 7 + y * 13) % 17));
+    }
+  }
+  const std::string path = Temp + "/streaming_large.tif";
+  vtkNew<vtkTIFFWriter> writer;
+  writer->SetInputData(image);
+  writer->SetCompressionToNoCompression();
+  writer->SetFileName(path.c_str());
+  writer->Write();
+  WriteWorldFile(Temp + "/streaming_large.tfw", w, h);
+  image->Initialize(); // the 128 MiB source leaves memory before the flight
+
+  vtkGlobeTest::Scene scene(200, 150, 128);
+  auto layer = vtkSmartPointer<vtkGlobeLayer>::New();
+  layer->SetFileName(path.c_str());
+  layer->SetRoleToHeight();
+  layer->SetStreamingToOn();
+  scene.Mapper->AddLayer(layer);
+  vtkGlobePageCache* cache = scene.Mapper->GetPageCache();
+  cache->SetPageSize(128);
+  cache->SetGPUMemory(4.0);
+  cache->SetCPUMemory(16.0);
+  scene.Mapper->WaitForPagesOn();
+  const double target[3] = { 0.0, 0.0, 0.0 };
+  long before = 0, peak = 0;
+  for (int i = 0; i < 24; ++i)
+  {
+    const double lon = -170.0 + 15.0 * i, lat = -60.0 + 5.0 * i;
+    const double camera[3] = { lon, lat, 300000.0 };
+    const double look[3] = { lon + 1.0, lat + 1.0, target[2] };
+    scene.Look(camera, look, 40.0, 1000.0, 3.0e6);
+    scene.Window->Render();
+    if (i == 1)
+    {
+      before = ResidentKiB();
+    }
+    peak = std::max(peak, ResidentKiB());
+  }
+  const long growth = peak - before;
+  const double gpu = static_cast<double>(cache->GetGPUMemoryUsed());
+  std::printf("  128 MiB raster, 4 MiB GPU + 16 MiB CPU cache: %lld pages loaded, %lld evicted, "
+              "RSS %ld MiB after frame 2, peak %ld MiB (+%ld MiB); GPU %.2f MiB\n",
+    cache->GetNumberOfLoadedPages(), cache->GetNumberOfEvictedPages(), before / 1024, peak / 1024,
+    growth / 1024, gpu / 1048576.0);
+  Checks.Expect(layer->IsStreamed() && cache->GetNumberOfLoadedPages() > 100,
+    "the 128 MiB raster streams (over 100 pages loaded)");
+  Checks.Expect(cache->GetNumberOfEvictedPages() > 0, "the flight needed more pages than the GPU cache holds");
+  // The caches (24 MiB) and OpenImageIO's tiles in flight; nothing proportional to the raster.
+  Checks.Expect(growth < 64 * 1024, "RSS grows by less than 64 MiB while streaming 128 MiB");
+  Checks.Expect(gpu <= 4.0 * 1048576.0 + 256.0 * 1024.0,
+    "GPU memory within the 4 MiB cache (and the page tables)");
+}
+} // namespace
+
+int TestGlobeStreaming(int, char*[])
+{
+  const int pageSize = 64;
+  const std::string path = WriteSelfEncoding(1024, 512);
+  const Levels levels = ReadLevels(path, pageSize);
+  std::printf("  self-encoding 1024 x 512, %zu levels of pages of %d^2\n", levels.W.size(), pageSize);
+
+  vtkGlobeTest::Scene scene(64, 64, 64);
+  scene.Mapper->LightingOff();
+  auto layer = vtkSmartPointer<vtkGlobeLayer>::New();
+  layer->SetFileName(path.c_str());
+  layer->SetRoleToColor();
+  layer->SetInterpolationToNearest();
+  layer->SetStreamingToOn();
+  scene.Mapper->AddLayer(layer);
+  vtkGlobePageCache* cache = scene.Mapper->GetPageCache();
+  cache->SetPageSize(pageSize);
+  // 8 pages of (64 + 2 * 2)^2 RGBA texels.
+  const double pageBytes = (pageSize + 2.0 * vtkGlobePageCache::Border) * (pageSize + 2.0 * vtkGlobePageCache::Border) * 4.0;
+  cache->SetGPUMemory(8.5 * pageBytes / 1048576.0);
+
+  struct View
+  {
+    const char* Name;
+    double Lon, Lat, Height;
+  };
+  // Magnified level 0 on a page corner, at the antimeridian, and zoomed out to levels 1-3.
+  const View views[] = { { "level 0, page corner", -180.0 + 22.5, 90.0 - 22.5, 120000.0 },
+    { "antimeridian", 180.0, 10.0, 200000.0 }, { "levels 1-2", 40.0, -30.0, 1500000.0 },
+    { "levels 2-3", -100.0, 45.0, 4000000.0 } };
+  for (const View& v : views)
+  {
+    const double camera[3] = { v.Lon, v.Lat, v.Height }, target[3] = { v.Lon, v.Lat, 0.0 };
+    scene.Look(camera, target, 30.0, 0.5 * v.Height, 2.0 * v.Height);
+    int frames = 0, undefined = 0;
+    FrameCheck settled;
+    for (; frames < 40; ++frames)
+    {
+      scene.Window->Render();
+      const FrameCheck f = CheckFrame(scene, levels);
+      undefined += f.Undefined;
+      if (scene.Mapper->IsStreamingIdle() && frames > 1)
+      {
+        settled = f;
+        break;
+      }
+    }
+    std::printf("  %-22s settled after %2d frames: %d px, %d undefined over all frames, %d at a "
+                "level more than one from the ideal; %d slots, %d resident\n",
+      v.Name, frames + 1, settled.Covered, undefined, settled.WrongLevel,
+      cache->GetNumberOfSlots(vtkGlobePageCache::Images), cache->GetNumberOfResidentPages());
+    Checks.Expect(settled.Covered > 1000, std::string(v.Name) + ": the globe covers the view");
+    Checks.Expect(undefined == 0, std::string(v.Name) + ": no frame shows an undefined texel");
+    Checks.Expect(settled.Undefined == 0 && settled.WrongLevel == 0,
+      std::string(v.Name) + ": settled, every pixel shows its texel within one level");
+
+    // A move that needs no new page (a hundredth of a pixel) loads none.
+    const long long requested = cache->GetNumberOfRequestedPages();
+    const long long loaded = cache->GetNumberOfLoadedPages();
+    const double moved[3] = { v.Lon + 1e-6, v.Lat, v.Height };
+    scene.Look(moved, target, 30.0, 0.5 * v.Height, 2.0 * v.Height);
+    for (int i = 0; i < 3; ++i)
+    {
+      scene.Window->Render();
+    }
+    Checks.Expect(cache->GetNumberOfRequestedPages() == requested &&
+        cache->GetNumberOfLoadedPages() == loaded,
+      std::string(v.Name) + ": a move that needs no new page loads none");
+  }
+  Checks.Expect(cache->GetNumberOfSlots(vtkGlobePageCache::Images) == 8, "the cache has 8 slots");
+  Checks.Expect(cache->GetNumberOfEvictedPages() > 0, "pages were evicted");
+  const size_t atlasBytes = static_cast<size_t>(8 * pageBytes);
+  Checks.Expect(cache->GetGPUMemoryUsed() <= atlasBytes + 64 * 1024,
+    "GPU memory within the cache (8 pages and the page table)");
+  Checks.Expect(vtkGlobeTest::NoGLError(), "no OpenGL error");
+
+  MemoryBound();
+  return Checks.Result();
+}

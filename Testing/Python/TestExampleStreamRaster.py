@@ -1,0 +1,63 @@
+"""Examples/Python/stream_raster.py run as a user runs it (issue "Planetary-scale data").
+
+- --help exits 0 and explains the arguments.
+- A missing file exits 1 with a message naming it, and writes no image.
+- Blue Marble (Data/earth/world.tif, 2048 x 1024) streamed in pages of 64 through a 1 MiB GPU
+  cache, from 2,000 km over Africa: the script reports the pyramid (6 levels), frames load pages
+  until the picture is final, the GPU layer memory stays within the cache, and the picture is
+  the imagery: the view is covered, and its colours are Blue Marble's (the mean pixel is not the
+  base colour's grey-green).
+"""
+import os
+import re
+import tempfile
+import unittest
+
+from globe_test_support import DATA, Image, run_example
+
+
+class TestExampleStreamRaster(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.out = os.path.join(self.tmp.name, "out.png")
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_help(self):
+        code, stdout, _ = run_example("stream_raster.py", "--help")
+        self.assertEqual(code, 0)
+        for word in ("raster", "--gpu", "--page", "--view", "prepare"):
+            self.assertIn(word, stdout)
+
+    def test_missing(self):
+        missing = os.path.join(self.tmp.name, "nothing.tif")
+        code, _, stderr = run_example("stream_raster.py", missing, "--out", self.out)
+        self.assertEqual(code, 1)
+        self.assertIn("nothing.tif", stderr)
+        self.assertFalse(os.path.exists(self.out))
+
+    def test_world(self):
+        code, stdout, stderr = run_example(
+            "stream_raster.py", os.path.join(DATA, "earth", "world.tif"), "--out", self.out,
+            "--size", "200x150", "--page", "64", "--gpu", "1", "--view", "20,0,2000000",
+            "--data", DATA)
+        self.assertEqual(code, 0, stderr)
+        self.assertIn("2048x1024 color, 6 levels of 64-texel pages", stdout)
+        final = re.search(r"final after (\d+) frames", stdout)
+        self.assertIsNotNone(final, stdout)
+        loaded = [int(m.group(1)) for m in re.finditer(r"^\s*\d+\s+[\d.]+\s+\d+\s+(\d+)", stdout, re.M)]
+        self.assertGreater(loaded[-1], 1, stdout)
+        memory = re.search(r"GPU layer memory ([\d.]+) MiB", stdout)
+        self.assertLessEqual(float(memory.group(1)), 1.1, stdout)
+        image = Image(self.out)
+        pixels = [p for _, _, p in image.pixels()]
+        dark = sum(1 for p in pixels if max(p) < 8)
+        self.assertLess(dark, len(pixels) // 20, "the globe covers the view")
+        mean = [sum(p[k] for p in pixels) / len(pixels) for k in range(3)]
+        # Africa at 2,000 km: ocean blue and desert; the blue channel differs from green.
+        self.assertGreater(abs(mean[2] - mean[1]) + abs(mean[0] - mean[1]), 10, mean)
+
+
+if __name__ == "__main__":
+    unittest.main()
