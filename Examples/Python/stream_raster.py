@@ -40,7 +40,7 @@ def main(argv=None):
                         help="heights or imagery (default: from the channel count)")
     parser.add_argument("--view", default="-121.76,46.85,400000",
                         help="camera over lon,lat at height (m), looking down (default: %(default)s)")
-    parser.add_argument("--gpu", type=float, default=128.0,
+    parser.add_argument("--gpu", type=float, default=120.0,
                         help="GPU page cache per data kind, MiB (default: %(default)s)")
     parser.add_argument("--page", type=int, default=256, help="page size in texels (default: %(default)s)")
     parser.add_argument("--frames", type=int, default=200,

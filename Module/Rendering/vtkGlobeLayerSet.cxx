@@ -619,7 +619,9 @@ const char* const PageFunctions =
   "{\n"
   "  float P = globePageGeometry.x;\n"
   "  vec4 L = texelFetch(table, ivec2(level, 0), 0);\n"
-  "  vec2 count = vec2(L.w, ceil(L.y / P));\n"
+  // L.xy: texels per unit of uv (level 0's size / 2^level); the level's own height is its
+  // floor (OpenImageIO's max(1, n/2) chain).
+  "  vec2 count = vec2(L.w, ceil(max(1.0, floor(L.y)) / P));\n"
   "  ivec2 page = ivec2(clamp(floor(uv * L.xy / P), vec2(0.0), count - 1.0));\n"
   "  vec4 e = texelFetch(table, ivec2(page.x, int(L.z) + page.y), 0);\n"
   "  vec2 size = texelFetch(table, ivec2(int(e.y), 0), 0).xy;\n"
@@ -1066,13 +1068,18 @@ void vtkGlobeLayerSet::RequestPages(vtkDoubleArray* footprints, int blockPixels,
       {
         continue;
       }
-      std::vector<std::array<int, 4>> level(levels); // width, height, columns, rows
+      // Per level: texels per unit of uv (level 0's size / 2^l, as vtkGlobePageCache maps
+      // them), page columns and rows.
+      std::vector<std::array<double, 4>> level(levels);
+      int size0[2];
+      pages->GetLevelSize(0, size0);
       for (int l = 0; l < levels; ++l)
       {
-        int size[2], count[2];
-        pages->GetLevelSize(l, size);
+        int count[2];
         pages->GetNumberOfPages(l, count);
-        level[l] = { size[0], size[1], count[0], count[1] };
+        level[l] = { std::ldexp(static_cast<double>(size0[0]), -l),
+          std::ldexp(static_cast<double>(size0[1]), -l), static_cast<double>(count[0]),
+          static_cast<double>(count[1]) };
       }
       const bool height = layer->GetRole() == vtkGlobeLayer::Height;
       // The layer's texture coordinates at (lon, lat), in double; false outside its domain.
@@ -1140,7 +1147,9 @@ void vtkGlobeLayerSet::RequestPages(vtkDoubleArray* footprints, int blockPixels,
             const int c0 = static_cast<int>(std::floor((uv[0] - halfU) * L[0] / P));
             const int c1 = static_cast<int>(std::floor((uv[0] + halfU) * L[0] / P));
             const int r0 = std::max(0, static_cast<int>(std::floor((uv[1] - halfV) * L[1] / P)));
-            const int r1 = std::min(L[3] - 1, static_cast<int>(std::floor((uv[1] + halfV) * L[1] / P)));
+            const int r1 =
+              std::min(static_cast<int>(L[3]) - 1, static_cast<int>(std::floor((uv[1] + halfV) * L[1] / P)));
+            const int columns = static_cast<int>(L[2]);
             if (c1 - c0 > 8 || r1 - r0 > 8)
             {
               continue; // a block this wide is sampled coarser; its neighbours ask too
@@ -1152,9 +1161,9 @@ void vtkGlobeLayerSet::RequestPages(vtkDoubleArray* footprints, int blockPixels,
                 int column = c;
                 if (e->Wraps)
                 {
-                  column = ((c % L[2]) + L[2]) % L[2];
+                  column = ((c % columns) + columns) % columns;
                 }
-                else if (c < 0 || c >= L[2])
+                else if (c < 0 || c >= columns)
                 {
                   continue;
                 }

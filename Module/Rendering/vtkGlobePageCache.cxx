@@ -89,7 +89,11 @@ struct LayerState
   int Loads = 0;
   int Kind = 0;
   int Levels = 0;
-  std::vector<int> Width, Height, Columns, Rows, FirstRow;
+  // Width, Height: texels per unit of the layer's texture coordinates at each level, level 0's
+  // size / 2^level (a texel of level l averages 2^l x 2^l texels of level 0, also where a
+  // size is odd and the level drops the last one: registered, not stretched).
+  std::vector<double> Width, Height;
+  std::vector<int> Columns, Rows, FirstRow;
   int TableWidth = 0, TableHeight = 0;
   vtkSmartPointer<vtkTextureObject> Table;
   bool TableDirty = true;
@@ -137,6 +141,7 @@ public:
   long long Frame = 0;
   int NextId = 1;
   int AllocatedPageSize = 0;
+  double AllocatedMemory = 0.0;
   bool ReportedFull = false;
 
   // Shared with the workers.
@@ -314,11 +319,12 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
   in.StartWorkers(this->NumberOfThreads);
 
   const int texels = this->PageSize + 2 * Border;
-  if (in.AllocatedPageSize != this->PageSize)
+  if (in.AllocatedPageSize != this->PageSize || in.AllocatedMemory != this->GPUMemory)
   {
     this->Flush();
     this->ReleaseGraphicsResources(window);
     in.AllocatedPageSize = this->PageSize;
+    in.AllocatedMemory = this->GPUMemory;
   }
 
   // Layers: drop those no longer composed or reloaded since (their slots become free).
@@ -499,8 +505,10 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
       int size[2], count[2];
       pages->GetLevelSize(l, size);
       pages->GetNumberOfPages(l, count);
-      s.Width.push_back(size[0]);
-      s.Height.push_back(size[1]);
+      int size0[2];
+      pages->GetLevelSize(0, size0);
+      s.Width.push_back(std::ldexp(static_cast<double>(size0[0]), -l));
+      s.Height.push_back(std::ldexp(static_cast<double>(size0[1]), -l));
       s.Columns.push_back(count[0]);
       s.Rows.push_back(count[1]);
       s.FirstRow.push_back(firstRow);

@@ -62,8 +62,8 @@ public:
   static constexpr int Border = 2;
 
   ///@{
-  /// GPU memory of each atlas in MiB (default 128, so at most 256 for both kinds); it takes
-  /// effect when the atlas is next allocated (a change empties the cache).
+  /// GPU memory of each atlas in MiB (default 120: both atlases and the page tables of a few
+  /// global layers stay under 256 MB); a change empties the cache.
   vtkSetClampMacro(GPUMemory, double, 0.01, 65536.0);
   vtkGetMacro(GPUMemory, double);
   ///@}
@@ -152,7 +152,7 @@ protected:
   ~vtkGlobePageCache() override;
 
   int PageSize = 256;
-  double GPUMemory = 128.0;
+  double GPUMemory = 120.0;
   double CPUMemory = 256.0;
   double UploadBudget = 16.0;
   int NumberOfThreads = 2;

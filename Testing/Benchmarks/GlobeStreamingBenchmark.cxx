@@ -214,7 +214,7 @@ int main(int argc, char* argv[])
   std::string data, json;
   std::vector<Planet> planets;
   int frames = 240, w = 640, h = 480, grid = 256, incoreMax = 8192;
-  double gpu = 128.0;
+  double gpu = 120.0;
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];

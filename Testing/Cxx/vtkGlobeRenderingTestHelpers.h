@@ -168,7 +168,7 @@ struct Scene
     if (Streamed())
     {
       this->Mapper->WaitForPagesOn();
-      this->Mapper->GetPageCache()->SetPageSize(64);
+      this->Mapper->GetPageCache()->SetPageSize(std::getenv("VTKGLOBE_TEST_PAGE") ? std::atoi(std::getenv("VTKGLOBE_TEST_PAGE")) : 64);
       this->Mapper->GetPageCache()->SetGPUMemory(16.0);
     }
   }

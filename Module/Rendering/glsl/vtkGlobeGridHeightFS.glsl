@@ -40,5 +40,8 @@ void main()
 #endif
   vec2 gradient;
   float h = globe_composeHeight(lonHi, lonLo, latHi, latLo, gradient);
-  gl_FragData[0] = vec4(h, 0.0, 0.0, 1.0);
+  // Only .r is read; texCoord in .gb keeps the quad's texture coordinate alive when no height
+  // layer is composed (h folds to 0 and the shader compiler would drop texCoordIn, which
+  // vtkOpenGLQuadHelper reports as an error).
+  gl_FragData[0] = vec4(h, texCoord, 1.0);
 }
