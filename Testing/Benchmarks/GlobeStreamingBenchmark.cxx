@@ -58,6 +58,9 @@ struct Block
   double RSS = 0, GPU = 0, Error = -1;
 };
 
+// The OpenGL renderer, read while a context is current.
+std::string Renderer = "unknown";
+
 struct Run
 {
   std::string Label, Mode;
@@ -163,6 +166,10 @@ Run Fly(const std::string& data, const Planet& planet, bool streamed, int frames
     if (i == 0)
     {
       run.FirstMs = ms;
+      if (const auto* name = glGetString(GL_RENDERER))
+      {
+        Renderer = reinterpret_cast<const char*>(name);
+      }
     }
     times.push_back(ms);
     if (i % 10 == 9 || i + 1 == frames)
@@ -301,7 +308,7 @@ int main(int argc, char* argv[])
     std::ofstream out(json);
     out << "{\"benchmark\": \"GlobeStreamingBenchmark\", \"frames\": " << frames
         << ", \"window\": [" << w << ", " << h << "], \"grid\": " << grid << ", \"gpu_cache_mib\": " << gpu
-        << ", \"gl_renderer\": \"" << reinterpret_cast<const char*>(glGetString(GL_RENDERER)) << "\", \"runs\": [";
+        << ", \"gl_renderer\": \"" << Renderer << "\", \"runs\": [";
     for (size_t i = 0; i < runs.size(); ++i)
     {
       const Run& r = runs[i];
