@@ -138,6 +138,7 @@ public:
   // Pages dropped for want of a free slot: not asked for again until a slot frees up, so a
   // view that needs more pages than the cache holds settles on what fits.
   std::unordered_set<unsigned long long> Deferred;
+  bool Retrying = false; // deferred pages were released this frame: the next asks for them
   long long Frame = 0;
   int NextId = 1;
   int AllocatedPageSize = 0;
@@ -431,6 +432,21 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
       }
       if (slot < 0)
       {
+        // Every slot is in use: a coarser page still displaces the finest one in use, so the
+        // levels that stay resident are the coarse ones every finer page falls back to.
+        int finest = KeyLevel(key);
+        for (size_t i = 0; i < a.Slots.size(); ++i)
+        {
+          const int level = KeyLevel(a.Slots[i].Key);
+          if (!a.Slots[i].Pinned && a.Slots[i].LayerId >= 0 && level < finest)
+          {
+            finest = level;
+            slot = static_cast<int>(i);
+          }
+        }
+      }
+      if (slot < 0)
+      {
         return false;
       }
       LayerState* owner = in.FindId(a.Slots[slot].LayerId);
@@ -549,6 +565,7 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
   }
 
   // A slot that the last frame did not use frees the deferred pages to be asked for again.
+  in.Retrying = false;
   for (const Atlas& a : in.Atlases)
   {
     bool room = !a.Free.empty();
@@ -558,6 +575,7 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
     }
     if (room)
     {
+      in.Retrying = !in.Deferred.empty();
       in.Deferred.clear();
       break;
     }
@@ -710,7 +728,8 @@ bool vtkGlobePageCache::IsIdle()
 {
   auto& in = *this->Internals;
   std::lock_guard<std::mutex> lock(in.Mutex);
-  return in.Queue.empty() && in.Running == 0 && in.Results.empty() && in.Waiting.empty();
+  return in.Queue.empty() && in.Running == 0 && in.Results.empty() && in.Waiting.empty() &&
+    !in.Retrying;
 }
 
 //------------------------------------------------------------------------------

@@ -16,8 +16,10 @@
  *   the worker threads (coarse levels first), which read it with vtkGlobeLayer::ReadPage;
  * - BeginFrame() uploads finished pages through a pixel-buffer object, at most UploadBudget
  *   MiB per frame, into free slots or those of the least recently used pages that the
- *   previous frame did not use; when every slot holds a page in use, the page is dropped
- *   (NumberOfDeferredPages; the frame keeps its coarser ancestor and asks again later). A
+ *   previous frame did not use; when every slot holds a page in use, a page displaces the
+ *   finest page in use that is finer than itself, or else it is dropped
+ *   (NumberOfDeferredPages; the frame keeps its coarser ancestor and asks again when a slot
+ *   frees up): the cache keeps the coarse levels every finer page falls back to. A
  *   frame never waits for disk unless it asks to (BeginFrame's wait, vtkGlobeMapper's
  *   WaitForPages).
  *
