@@ -29,9 +29,16 @@
  * Kooima's projection-quality weight; it blends by the layer's BlendMode. Where every weight
  * is zero the layers below (or the base) show; nothing divides by a zero sum.
  *
+ * Streamed layers (vtkGlobeLayer::IsStreamed; Documentation/streaming.md) have no texture:
+ * their pages live in the set's vtkGlobePageCache (GetPageCache), the generated code reads them
+ * through the layer's page table (globe_pageGrad, globe_pageHeights: the level from the
+ * footprint, as OpenGL picks mipmap levels), and RequestPages turns the frame's footprint
+ * samples into the pages to load.
+ *
  * The generated source depends only on the roles, order, blend modes, projections and
- * quality flags of the enabled layers (GetShaderKey()); opacity, gamma, valid range, feather
- * width and filtering are uniforms or sampler state, so changing them rebuilds nothing.
+ * quality flags of the enabled layers, and for streamed layers their filtering
+ * (GetShaderKey()); opacity, gamma, valid range, feather width and the filtering of whole
+ * layers are uniforms or sampler state, so changing them rebuilds nothing.
  */
 #ifndef vtkGlobeLayerSet_h
 #define vtkGlobeLayerSet_h
