@@ -317,6 +317,28 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
   ++in.Frame;
   in.TouchedThisFrame.clear();
   this->BytesUploadedLastFrame = 0;
+
+  // The worker threads end before a page source they read is reconfigured or may be
+  // destroyed (a layer added, dropped or reloaded, the page size or memory changed):
+  // OpenImageIO keeps per-thread records in each ImageCache a thread used, and a cache
+  // rebuilt or destroyed under live threads that used it crashed the soak program (in
+  // ImageCacheFile::get_imageinput, and in ~ImageCacheTile at exit). Such changes are rare;
+  // new threads start at once.
+  bool same = in.AllocatedPageSize == this->PageSize && in.AllocatedMemory == this->GPUMemory &&
+    in.FrameLayers.size() == in.Layers.size();
+  for (vtkGlobeLayer* layer : in.FrameLayers)
+  {
+    LayerState* s = in.Find(layer);
+    same = same && s && s->Loads == layer->GetNumberOfLoads();
+  }
+  if (!same)
+  {
+    in.StopWorkers();
+    for (auto& f : in.InFlight)
+    {
+      f.clear(); // their reads were cancelled: the next frame asks again
+    }
+  }
   in.StartWorkers(this->NumberOfThreads);
 
   const int texels = this->PageSize + 2 * Border;
