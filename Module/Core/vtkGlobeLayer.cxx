@@ -9,6 +9,7 @@
 #include "vtkFloatArray.h"
 #include "vtkGlobePageSource.h"
 #include "vtkGlobeRasterReader.h"
+#include "vtkGlobeRasterSamples.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -41,45 +42,6 @@ namespace
 constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
 constexpr float NaNf = std::numeric_limits<float>::quiet_NaN();
 
-/// The nodata value in a raster's sample type, when it is one of its values.
-template <typename T>
-bool NoDataAs(double noData, T& value)
-{
-  if constexpr (std::is_integral_v<T>)
-  {
-    // Out-of-range or fractional values cannot occur in the raster (and the cast would be
-    // undefined).
-    if (!(noData == std::floor(noData)) ||
-      noData < static_cast<double>(std::numeric_limits<T>::lowest()) ||
-      noData > static_cast<double>(std::numeric_limits<T>::max()))
-    {
-      return false;
-    }
-    value = static_cast<T>(noData);
-    return true;
-  }
-  else
-  {
-    if (std::isnan(noData))
-    {
-      return false; // NaN samples are voids anyway
-    }
-    const double max = static_cast<double>(std::numeric_limits<T>::max());
-    if (std::isfinite(noData) && std::abs(noData) > max)
-    {
-      // Text that rounds just past the largest float (e.g. "3.40282347e+38") means it.
-      if (std::abs(noData) > max * (1.0 + 1e-7))
-      {
-        return false;
-      }
-      noData = std::copysign(max, noData);
-    }
-    value = static_cast<T>(noData);
-    return true;
-  }
-}
-
-
 /// Converts native samples (VTK rows, row 0 south) to float rows north first, turning nodata
 /// samples into NaN (the void marker).
 template <typename T>
@@ -88,7 +50,7 @@ void SamplesToFloat(const T* raw, int width, int height, bool hasNoData, double 
 {
   // Compare in the raster's own type: the nodata text may round (e.g. float -3.4e38).
   T nd{};
-  const bool useNoData = hasNoData && NoDataAs(noData, nd);
+  const bool useNoData = hasNoData && vtkGlobeRasterSamples::NoDataAs(noData, nd);
   out.resize(static_cast<size_t>(width) * height);
   for (int r = 0; r < height; ++r)
   {
@@ -506,6 +468,9 @@ public:
     bool OverriddenNoData = false;
     double NoData = 0.0;
     bool Fill = true;
+    // The range of the valid heights of every page read (low > high: none yet).
+    double Low = 1.0;
+    double High = -1.0;
   };
   PageValues Values;
   std::mutex ValuesMutex;
@@ -794,6 +759,8 @@ bool vtkGlobeLayer::Update()
     in.LastFailure = now;
     in.LastFailure.InputData = nullptr;
     in.LastFailure.InputTime = 0;
+    // Decided after the comparison below: a change of Streaming changes the MTime anyway.
+    in.LastFailure.Streamed = false;
     in.LastFailure.UpstreamTime = upstreamTime();
     in.FailureMTime = this->GetMTime();
   };
@@ -807,6 +774,7 @@ bool vtkGlobeLayer::Update()
   in.LastFailure = vtkInternals::Settings();
   if (in.Source == vtkInternals::None)
   {
+    this->InvokeEvent(vtkCommand::StartEvent);
     ++this->NumberOfLoads;
     this->Invalidate();
     vtkErrorMacro(<< "Nothing to load: no FileName is set, no input is connected and no "
@@ -840,6 +808,7 @@ bool vtkGlobeLayer::Update()
     {
       return true;
     }
+    this->InvokeEvent(vtkCommand::StartEvent); // page readers let go of this layer
     ++this->NumberOfLoads;
     this->Invalidate();
     bool ok = false;
@@ -885,6 +854,7 @@ bool vtkGlobeLayer::Update()
     return true; // nothing the data depends on changed (e.g. only the Name)
   }
 
+  this->InvokeEvent(vtkCommand::StartEvent);
   ++this->NumberOfLoads;
   this->Invalidate();
   bool ok = false;
@@ -946,6 +916,9 @@ bool vtkGlobeLayer::LoadStreamed()
   }
   vtkGlobePageSource* pages = in.Pages;
   pages->SetFileName(this->FileName);
+  // Opened afresh: the file may have been rewritten in place, or have failed before (the
+  // page readers let go at StartEvent).
+  pages->Modified();
   const int levels = pages->GetNumberOfLevels(); // opens the file (errors name it)
   if (levels <= 0)
   {
@@ -972,12 +945,17 @@ bool vtkGlobeLayer::LoadStreamed()
     in.Values.Offset = this->ValueOffset;
     in.Values.Minimum = this->PlausibleRange[0];
     in.Values.Maximum = this->PlausibleRange[1];
-    in.Values.OverriddenNoData = this->NoDataValueOverridden && this->HasNoDataValue;
-    in.Values.NoData = this->NoDataValue;
+    // Page values are floats: an overridden nodata compares as a float sample holds it.
+    float noData = 0.0f;
+    in.Values.OverriddenNoData = this->NoDataValueOverridden && this->HasNoDataValue &&
+      vtkGlobeRasterSamples::NoDataAs(this->NoDataValue, noData);
+    in.Values.NoData = noData;
     in.Values.Fill = this->FillVoids;
+    in.Values.Low = 1.0;
+    in.Values.High = -1.0;
   }
   in.Streamed = true; // ReadPage below needs it
-  // The coarsest level is one page: its range bounds what the first frame can show.
+  // The coarsest level is one page: its range (ReadPage records it) bounds the first frame.
   if (this->Role == Height)
   {
     vtkNew<vtkFloatArray> page;
@@ -986,20 +964,35 @@ bool vtkGlobeLayer::LoadStreamed()
       in.Streamed = false;
       return false;
     }
-    double lo = VTK_DOUBLE_MAX, hi = -VTK_DOUBLE_MAX;
-    for (vtkIdType i = 0; i < page->GetNumberOfValues(); ++i)
-    {
-      const double v = page->GetValue(i);
-      if (!std::isnan(v))
-      {
-        lo = std::min(lo, v);
-        hi = std::max(hi, v);
-      }
-    }
-    this->MinimumValue = lo <= hi ? lo : 0.0;
-    this->MaximumValue = lo <= hi ? hi : 0.0;
   }
   return true;
+}
+
+double vtkGlobeLayer::GetMinimumValue()
+{
+  this->FoldPageRange();
+  return this->MinimumValue;
+}
+
+double vtkGlobeLayer::GetMaximumValue()
+{
+  this->FoldPageRange();
+  return this->MaximumValue;
+}
+
+void vtkGlobeLayer::FoldPageRange()
+{
+  vtkInternals& in = *this->Internals;
+  if (!in.Streamed || this->Role != Height)
+  {
+    return;
+  }
+  std::lock_guard<std::mutex> lock(in.ValuesMutex);
+  if (in.Values.Low <= in.Values.High)
+  {
+    this->MinimumValue = in.Values.Low;
+    this->MaximumValue = in.Values.High;
+  }
 }
 
 bool vtkGlobeLayer::IsStreamed()
@@ -1037,6 +1030,7 @@ bool vtkGlobeLayer::ReadPage(int level, int column, int row, vtkDataArray* page)
   const float nan = std::numeric_limits<float>::quiet_NaN();
   float* values = heights->GetPointer(0);
   bool voids = false;
+  double low = VTK_DOUBLE_MAX, high = -VTK_DOUBLE_MAX;
   for (vtkIdType i = 0, n = heights->GetNumberOfValues(); i < n; ++i)
   {
     const double raw = values[i];
@@ -1049,6 +1043,19 @@ bool vtkGlobeLayer::ReadPage(int level, int column, int row, vtkDataArray* page)
     const double h = raw * v.Scale + v.Offset;
     values[i] = h >= v.Minimum && h <= v.Maximum ? static_cast<float>(h) : nan;
     voids |= std::isnan(values[i]);
+    if (!std::isnan(values[i]))
+    {
+      low = std::min(low, static_cast<double>(values[i]));
+      high = std::max(high, static_cast<double>(values[i]));
+    }
+  }
+  if (low <= high)
+  {
+    // Filled voids lie within the valid values around them: the range is final here.
+    std::lock_guard<std::mutex> lock(in.ValuesMutex);
+    const bool any = in.Values.Low <= in.Values.High;
+    in.Values.Low = any ? std::min(in.Values.Low, low) : low;
+    in.Values.High = any ? std::max(in.Values.High, high) : high;
   }
   vtkGlobePageSource* pages = in.Pages;
   if (!voids || !v.Fill ||
@@ -1065,7 +1072,7 @@ bool vtkGlobeLayer::ReadPage(int level, int column, int row, vtkDataArray* page)
     std::copy(page.begin(), page.end(), values);
     return true;
   }
-  // Pull: each void takes the bilinear value of the filled level above at its centre. The
+  // Push: each void takes the bilinear value of the filled level above at its centre. The
   // parent page (column / 2, row / 2) holds this page and its border within its own border.
   vtkNew<vtkFloatArray> parent;
   if (!this->ReadPage(level + 1, column / 2, row / 2, parent))

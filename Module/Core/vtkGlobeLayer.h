@@ -294,11 +294,17 @@ public:
    * (default 8192: such a layer would need over 256 MiB of float texture whole, and files
    * over 16384 cannot be one texture at all); On streams every file; Off reads files whole.
    * In-memory data and pipeline input are always whole (they are in memory already).
-   * A streamed layer has no GetData(); its Minimum/MaximumValue are those of its coarsest
-   * level (the renderer widens them as finer pages load). FillVoids fills each page's voids
-   * as it is read, bilinearly from the (filled) page one level up: the pull half of the
-   * push-pull fill, page by page; ValueScale, ValueOffset, the plausible range and an overridden nodata value
-   * are applied to every page as it is read. Mask layers stream only from 3 or 4 channels.
+   * A streamed layer has no GetData(); its Minimum/MaximumValue span the pages read so far
+   * (the coarsest at load, widened by every finer page ReadPage reads: they bound what the
+   * renderer can show). FillVoids fills each page's voids as it is read, bilinearly from the
+   * (filled) page one level up: the push half of the push-pull fill, page by page (the
+   * nodata-aware levels are the pull half); the coarsest page gets the whole fill.
+   * ValueScale, ValueOffset, the plausible range and an overridden nodata value are applied
+   * to every page as it is read (NumberOfImplausibleValues counts whole loads only; the
+   * file's own nodata always applies). Mask layers stream only from 3 or 4 channels.
+   *
+   * Before any (re)load, Update() invokes StartEvent: whoever reads the layer's pages on
+   * other threads (vtkGlobePageCache) lets go of them then.
    */
   vtkSetClampMacro(Streaming, int, StreamingOff, StreamingAuto);
   vtkGetMacro(Streaming, int);
@@ -309,15 +315,15 @@ public:
   vtkGetMacro(StreamingThreshold, int);
   /// True when the last successful Update() made a streamed layer.
   bool IsStreamed();
-  /// The page source of a streamed layer (its page size, border and cache memory are set by
-  /// the renderer before Update()).
+  /// The page source of a streamed layer (the renderer sets its page size, border and cache
+  /// memory before Update(), vtkGlobePageCache::ConfigureSource).
   vtkGlobePageSource* GetPageSource();
   /**
    * One page of a streamed layer with this layer's value settings applied: the page
    * source's ReadPage (float heights with NaN voids, or RGBA) then, for heights,
    * value * ValueScale + ValueOffset, and NaN where that lies outside the plausible range
    * or equals an overridden nodata value; with FillVoids, voids filled from the level above.
-   * Thread-safe while no setting changes; returns
+   * Thread-safe between loads (see StartEvent above); returns
    * false (with an error) when the layer is not streamed or the page cannot be read.
    */
   bool ReadPage(int level, int column, int row, vtkDataArray* page);
@@ -390,8 +396,9 @@ public:
 
   ///@{
   /// Range of the valid (non-void) heights after scale and offset; 0 for Color or invalid.
-  vtkGetMacro(MinimumValue, double);
-  vtkGetMacro(MaximumValue, double);
+  /// Streamed: of the pages read so far.
+  double GetMinimumValue();
+  double GetMaximumValue();
   ///@}
 
   /// A Geographic layer whose extent spans 360 degrees of longitude.
@@ -451,6 +458,7 @@ private:
 
   bool Load(vtkImageData* image, int streamedRows = 0);
   bool LoadStreamed();
+  void FoldPageRange();
   bool StartMemoryData(const char* method, const char* what, int width, int height,
     const void* values, const double extent[4]);
   void SetMemoryImage(int role, int width, int height, int components, int scalarType,

@@ -56,6 +56,10 @@ struct State
   double Geo[4] = { 0, 0, 0, 0 };
   bool HasNoData = false;
   double NoData = 0.0;
+  // Nodata as a sample of the file's type holds it (compared with converted samples); false
+  // when no sample can be nodata.
+  bool NoDataUsable = false;
+  double NoDataSample = 0.0;
   bool Global = false;
   bool FlipRows = false;
   bool FlipColumns = false;
@@ -78,7 +82,7 @@ struct State
       if (this->Heights)
       {
         const double v = vtkGlobeRasterSamples::ToDouble(in, this->ScalarType);
-        heights[i] = (std::isnan(v) || (this->HasNoData && v == this->NoData))
+        heights[i] = (std::isnan(v) || (this->NoDataUsable && v == this->NoDataSample))
           ? NaNf
           : static_cast<float>(v);
         continue;
@@ -97,12 +101,12 @@ struct State
       }
       const bool hasAlpha = this->FileChannels == 2 || this->FileChannels >= 4;
       o[3] = hasAlpha ? in[colours] : 255;
-      if (this->HasNoData)
+      if (this->NoDataUsable)
       {
         bool all = true;
         for (int k = 0; k < colours; ++k)
         {
-          all = all && static_cast<double>(in[k]) == this->NoData;
+          all = all && static_cast<double>(in[k]) == this->NoDataSample;
         }
         if (all)
         {
@@ -265,6 +269,9 @@ std::string Build(const std::string& file, int pageSize, int border, double cach
     s.FileChannels = std::min(spec.nchannels, 4);
     s.ReadType = OIIO::TypeDesc::UINT8;
   }
+  s.NoDataUsable = s.HasNoData &&
+    vtkGlobeRasterSamples::NoDataSample(
+      s.NoData, s.Heights ? s.ScalarType : VTK_UNSIGNED_CHAR, s.NoDataSample);
 
   // The levels the file (or automip) provides, up to the first that fits in one page.
   int mipLevels = 1;

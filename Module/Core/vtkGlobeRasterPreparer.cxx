@@ -201,6 +201,10 @@ struct Layout
   int Compression = 1;
   bool HasNoData = false;
   double NoData = 0.0;
+  // Nodata as a sample of ScalarType holds it (samples are compared after conversion to
+  // double); false when no sample can be nodata.
+  bool NoDataUsable = false;
+  double NoDataSample = 0.0;
   bool Height = true; // 1 channel: nodata-aware averaging
 };
 
@@ -510,7 +514,7 @@ bool vtkGlobeRasterPreparer::Write()
           int count = 0;
           for (double x : v)
           {
-            if (!std::isnan(x) && !(layout.HasNoData && x == layout.NoData))
+            if (!std::isnan(x) && !(layout.NoDataUsable && x == layout.NoDataSample))
             {
               sum += x;
               ++count;
@@ -570,6 +574,8 @@ bool vtkGlobeRasterPreparer::Write()
       {
         layout.HasNoData = true;
         layout.NoData = number(vtkGlobeRasterReader::GetNoDataValueArrayName(), 0);
+        layout.NoDataUsable =
+          vtkGlobeRasterSamples::NoDataSample(layout.NoData, layout.ScalarType, layout.NoDataSample);
       }
       if (fd->GetAbstractArray(vtkGlobeRasterReader::GetDatumSemiAxesArrayName()))
       {

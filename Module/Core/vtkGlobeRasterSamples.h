@@ -9,7 +9,10 @@
 
 #include <OpenImageIO/typedesc.h>
 
+#include <cmath>
 #include <cstring>
+#include <limits>
+#include <type_traits>
 
 namespace vtkGlobeRasterSamples
 {
@@ -75,6 +78,59 @@ inline double ToDouble(const void* p, int scalarType)
                      value = static_cast<double>(sample));
   }
   return value;
+}
+
+/// The nodata value in a raster's sample type, when it is one of its values.
+template <typename T>
+inline bool NoDataAs(double noData, T& value)
+{
+  if constexpr (std::is_integral_v<T>)
+  {
+    // Out-of-range or fractional values cannot occur in the raster (and the cast would be
+    // undefined).
+    if (!(noData == std::floor(noData)) ||
+      noData < static_cast<double>(std::numeric_limits<T>::lowest()) ||
+      noData > static_cast<double>(std::numeric_limits<T>::max()))
+    {
+      return false;
+    }
+    value = static_cast<T>(noData);
+    return true;
+  }
+  else
+  {
+    if (std::isnan(noData))
+    {
+      return false; // NaN samples are voids anyway
+    }
+    const double max = static_cast<double>(std::numeric_limits<T>::max());
+    if (std::isfinite(noData) && std::abs(noData) > max)
+    {
+      // Text that rounds just past the largest float (e.g. "3.40282347e+38") means it.
+      if (std::abs(noData) > max * (1.0 + 1e-7))
+      {
+        return false;
+      }
+      noData = std::copysign(max, noData);
+    }
+    value = static_cast<T>(noData);
+    return true;
+  }
+}
+
+/**
+ * The nodata value as a sample of VTK type `scalarType` holds it, as double (what ToDouble
+ * gives for a nodata sample), so that samples compare exactly (a float raster's nodata text
+ * -9999.9 is stored as -9999.900390625); false when no sample of the type can be it.
+ */
+inline bool NoDataSample(double noData, int scalarType, double& sample)
+{
+  switch (scalarType)
+  {
+    vtkTemplateMacro(VTK_TT value{}; if (!NoDataAs(noData, value)) { return false; }
+                     sample = static_cast<double>(value); return true;);
+  }
+  return false;
 }
 }
 

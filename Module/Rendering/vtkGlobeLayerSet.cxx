@@ -212,6 +212,7 @@ int vtkGlobeLayerSet::Update()
     {
       continue;
     }
+    in.Pages->ConfigureSource(layer); // a streamed layer opens its file once, as the cache reads it
     const bool loaded = layer->Update() && layer->IsValid();
     if (e.Removed)
     {
@@ -304,21 +305,15 @@ int vtkGlobeLayerSet::Update()
 
 void vtkGlobeLayerSet::ComputeHeightRange()
 {
-  // Heights: an interval bound of what the composition can give (the PGM spheres need it).
-  // A streamed layer adds the range of the pages it uploaded: what the GPU can show.
+  // Heights: an interval bound of what the composition can give (the PGM spheres need it;
+  // a streamed layer's range spans the pages read so far, which grows between frames).
   auto& in = *this->Internals;
   in.MinimumHeight = in.MaximumHeight = 0.0;
   bool first = true;
   for (Entry* e : in.Roles[vtkGlobeLayer::Height])
   {
     vtkGlobeLayer* layer = e->Layer;
-    double range[2] = { layer->GetMinimumValue(), layer->GetMaximumValue() };
-    double loaded[2];
-    if (e->Streamed && in.Pages->GetLoadedHeightRange(layer, loaded))
-    {
-      range[0] = std::min(range[0], loaded[0]);
-      range[1] = std::max(range[1], loaded[1]);
-    }
+    const double range[2] = { layer->GetMinimumValue(), layer->GetMaximumValue() };
     const double* valid = layer->GetValidRange();
     const double lo = std::max(range[0], valid[0]);
     const double hi = std::min(range[1], valid[1]);

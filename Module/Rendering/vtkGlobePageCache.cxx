@@ -3,11 +3,14 @@
 #include "vtkFloatArray.h"
 #include "vtkGlobeLayer.h"
 #include "vtkGlobePageSource.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkWeakPointer.h"
+#include "vtkCallbackCommand.h"
 #include "vtk_glew.h"
 
 #include <algorithm>
@@ -52,8 +55,6 @@ struct Finished
   PageKey Key = 0;
   vtkSmartPointer<vtkDataArray> Data;
   bool Ok = false;
-  float Minimum = 0.0f; // valid heights of the page (Minimum > Maximum: none)
-  float Maximum = -1.0f;
 };
 
 struct Job
@@ -82,6 +83,38 @@ struct Atlas
   std::vector<int> Free;
 };
 
+// An observer on a layer, removed with its owner (move-only).
+struct LayerObserver
+{
+  vtkWeakPointer<vtkObject> Object;
+  unsigned long Tag = 0;
+  LayerObserver() = default;
+  LayerObserver(vtkObject* object, unsigned long event, vtkCommand* command)
+    : Object(object)
+    , Tag(object->AddObserver(event, command))
+  {
+  }
+  LayerObserver(LayerObserver&& o) noexcept
+    : Object(o.Object)
+    , Tag(o.Tag)
+  {
+    o.Object = nullptr;
+  }
+  LayerObserver& operator=(LayerObserver&& o) noexcept
+  {
+    std::swap(this->Object, o.Object);
+    std::swap(this->Tag, o.Tag);
+    return *this;
+  }
+  ~LayerObserver()
+  {
+    if (this->Object)
+    {
+      this->Object->RemoveObserver(this->Tag);
+    }
+  }
+};
+
 struct LayerState
 {
   int Id = 0;
@@ -98,31 +131,10 @@ struct LayerState
   vtkSmartPointer<vtkTextureObject> Table;
   bool TableDirty = true;
   std::unordered_map<PageKey, int> Resident; // page -> slot
-  double MinimumHeight = 1.0, MaximumHeight = -1.0;
+  LayerObserver Observer; // the layer's StartEvent: the readers let go before it reloads
   bool Listed = false; // composed by the coming frame
 };
 
-void FindRange(vtkDataArray* data, float& lo, float& hi)
-{
-  lo = 1.0f;
-  hi = -1.0f;
-  auto* f = vtkFloatArray::SafeDownCast(data);
-  if (!f)
-  {
-    return;
-  }
-  bool any = false;
-  for (vtkIdType i = 0; i < f->GetNumberOfValues(); ++i)
-  {
-    const float v = f->GetValue(i);
-    if (!std::isnan(v))
-    {
-      lo = any ? std::min(lo, v) : v;
-      hi = any ? std::max(hi, v) : v;
-      any = true;
-    }
-  }
-}
 } // namespace
 
 class vtkGlobePageCache::vtkInternals
@@ -210,10 +222,6 @@ public:
         f.Data = vtkSmartPointer<vtkUnsignedCharArray>::New();
       }
       f.Ok = job.Layer->ReadPage(KeyLevel(job.Key), KeyColumn(job.Key), KeyRow(job.Key), f.Data);
-      if (f.Ok && job.Heights)
-      {
-        FindRange(f.Data, f.Minimum, f.Maximum);
-      }
       {
         std::lock_guard<std::mutex> lock(this->Mutex);
         this->Results.push_back(std::move(f));
@@ -252,6 +260,22 @@ public:
     this->Results.clear();
   }
 
+  // Ends the reading threads (they start again at the next frame): a page source is
+  // reconfigured or reloaded only when no thread reads it. OpenImageIO keeps per-thread
+  // records in each ImageCache a thread used; a cache rebuilt under live threads crashed a
+  // reader (the soak program). The cancelled reads are asked for again.
+  void LetGo()
+  {
+    this->StopWorkers();
+    for (auto& f : this->InFlight)
+    {
+      f.clear();
+    }
+  }
+
+  // Observer of the layers' StartEvent.
+  vtkNew<vtkCallbackCommand> ReloadObserver;
+
   // Cancels queued reads and waits for the running ones (before settings change).
   void Drain()
   {
@@ -266,6 +290,25 @@ public:
 vtkGlobePageCache::vtkGlobePageCache()
   : Internals(new vtkInternals)
 {
+  this->Internals->ReloadObserver->SetClientData(this->Internals.get());
+  this->Internals->ReloadObserver->SetCallback([](vtkObject*, unsigned long, void* in, void*) {
+    static_cast<vtkInternals*>(in)->LetGo();
+  });
+}
+
+void vtkGlobePageCache::ConfigureSource(vtkGlobeLayer* layer)
+{
+  vtkGlobePageSource* pages = layer ? layer->GetPageSource() : nullptr;
+  if (!pages ||
+    (pages->GetPageSize() == this->PageSize && pages->GetBorder() == Border &&
+      pages->GetCacheMemory() == this->CPUMemory))
+  {
+    return;
+  }
+  this->Internals->LetGo();
+  pages->SetPageSize(this->PageSize);
+  pages->SetBorder(Border);
+  pages->SetCacheMemory(this->CPUMemory);
 }
 
 vtkGlobePageCache::~vtkGlobePageCache()
@@ -333,11 +376,7 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
   }
   if (!same)
   {
-    in.StopWorkers();
-    for (auto& f : in.InFlight)
-    {
-      f.clear(); // their reads were cancelled: the next frame asks again
-    }
+    in.LetGo();
   }
   in.StartWorkers(this->NumberOfThreads);
 
@@ -506,14 +545,6 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
     this->BytesUploaded += static_cast<long long>(bytes);
     return true;
   };
-  auto widen = [](LayerState& s, float lo, float hi) {
-    if (lo <= hi)
-    {
-      s.MinimumHeight = s.MinimumHeight <= s.MaximumHeight ? std::min<double>(s.MinimumHeight, lo) : lo;
-      s.MaximumHeight = s.MinimumHeight <= s.MaximumHeight ? std::max<double>(s.MaximumHeight, hi) : hi;
-    }
-  };
-
   // New layers: their pyramid, and the coarsest page read now (a frame never shows an
   // undefined texel).
   for (vtkGlobeLayer* layer : listed)
@@ -522,11 +553,8 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
     {
       continue;
     }
+    this->ConfigureSource(layer); // done before the layer's Update() already, normally
     vtkGlobePageSource* pages = layer->GetPageSource();
-    // Safe: no worker reads a layer that is not registered.
-    pages->SetPageSize(this->PageSize);
-    pages->SetBorder(Border);
-    pages->SetCacheMemory(this->CPUMemory);
     LayerState s;
     s.Id = in.NextId++;
     s.Layer = layer;
@@ -538,13 +566,12 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
       continue; // the page source reported why
     }
     int firstRow = 1;
+    int size0[2];
+    pages->GetLevelSize(0, size0);
     for (int l = 0; l < s.Levels; ++l)
     {
-      int size[2], count[2];
-      pages->GetLevelSize(l, size);
+      int count[2];
       pages->GetNumberOfPages(l, count);
-      int size0[2];
-      pages->GetLevelSize(0, size0);
       s.Width.push_back(std::ldexp(static_cast<double>(size0[0]), -l));
       s.Height.push_back(std::ldexp(static_cast<double>(size0[1]), -l));
       s.Columns.push_back(count[0]);
@@ -569,6 +596,7 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
     }
     LayerState& stored = in.Layers[layer] = std::move(s);
     stored.Listed = true;
+    stored.Observer = LayerObserver(layer, vtkCommand::StartEvent, in.ReloadObserver);
     if (!upload(stored, MakeKey(stored.Levels - 1, 0, 0), coarsest, true))
     {
       if (!in.ReportedFull)
@@ -581,9 +609,6 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
       in.Layers.erase(layer);
       continue;
     }
-    float lo, hi;
-    FindRange(coarsest, lo, hi);
-    widen(stored, lo, hi);
   }
 
   // A slot that the last frame did not use frees the deferred pages to be asked for again.
@@ -641,9 +666,7 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
       // Every slot holds a page the last frame used: the frame keeps the ancestor.
       ++this->NumberOfDeferredPages;
       in.Deferred.insert(vtkInternals::Tag(f.LayerId, f.Key));
-      continue;
     }
-    widen(*s, f.Minimum, f.Maximum);
   }
 
   // Page tables of layers whose residency changed.
@@ -770,18 +793,6 @@ int vtkGlobePageCache::GetNumberOfLevels(vtkGlobeLayer* layer)
 {
   LayerState* s = this->Internals->Find(layer);
   return s ? s->Levels : 0;
-}
-
-bool vtkGlobePageCache::GetLoadedHeightRange(vtkGlobeLayer* layer, double range[2])
-{
-  LayerState* s = this->Internals->Find(layer);
-  if (!s || s->MinimumHeight > s->MaximumHeight)
-  {
-    return false;
-  }
-  range[0] = s->MinimumHeight;
-  range[1] = s->MaximumHeight;
-  return true;
 }
 
 int vtkGlobePageCache::GetNumberOfResidentPages()

@@ -100,6 +100,14 @@ public:
   /// Lists a streamed layer for the next BeginFrame (call once per layer and frame).
   void AddFrameLayer(vtkGlobeLayer* layer);
 
+  /**
+   * Gives a layer's page source this cache's page size, border and CPU memory, before the
+   * layer's Update() (vtkGlobeLayerSet does), so a streamed layer opens its file once. When
+   * they differ, the reading threads end first: a page source is reconfigured only when no
+   * thread reads it (so are reloading layers: the cache observes their StartEvent).
+   */
+  void ConfigureSource(vtkGlobeLayer* layer);
+
   /// The frame uses page (level, column, row) of a layer (after BeginFrame).
   void Request(vtkGlobeLayer* layer, int level, int column, int row);
 
@@ -139,10 +147,6 @@ public:
   long long GetCPUMemoryUsed();
   void ResetStatistics();
   ///@}
-
-  /// Height range (m) of the pages of a layer uploaded so far (its coarsest page at least);
-  /// false when the layer has no resident height page.
-  bool GetLoadedHeightRange(vtkGlobeLayer* layer, double range[2]);
 
   /// Empties the cache (keeps the settings); the next frame starts from the coarsest pages.
   void Flush();

@@ -129,6 +129,24 @@ int TestGlobeLayerBadInput(int, char*[])
   layer->Modified();
   Expect(!layer->Update() && observer->GetError() && layer->GetNumberOfLoads() == loads + 1,
     "after Modified(): tried (and reported) again");
+  // The same for a streamed layer (its failure once compared a setting decided later).
+  {
+    vtkNew<vtkGlobeLayer> streamed;
+    vtkNew<vtkTest::ErrorObserver> streamedErrors;
+    streamed->AddObserver(vtkCommand::ErrorEvent, streamedErrors);
+    streamed->SetStreamingToOn();
+    streamed->SetFileName((Temp + "/no_such_file.tif").c_str());
+    int reports = 0;
+    for (int i = 0; i < 3; ++i)
+    {
+      streamedErrors->Clear();
+      streamed->Update();
+      reports += streamedErrors->GetError() ? 1 : 0;
+    }
+    Expect(reports == 1 && !streamed->IsValid(),
+      "a missing streamed file: reported once over three Update() calls (" +
+        std::to_string(reports) + ")");
+  }
   observer->Clear();
   ExpectFileError(layer, observer, Temp, vtkGlobeLayer::Height, { "not a regular file" },
     "a directory: 'not a regular file'");

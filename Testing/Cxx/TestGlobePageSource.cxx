@@ -592,6 +592,28 @@ int TestGlobePageSource(int, char*[])
         page->GetValue(1 * N + 2) == static_cast<float>((3.0 + 258.0 + 259.0) / 3.0),
       "level 1: all-void block -> NaN; partly void block -> mean of its 3 valid posts");
 
+    // Nodata text a float cannot hold exactly (-9999.9 is stored as -9999.900390625): the
+    // voids are compared as the file's samples hold them, in the plain file (its levels
+    // averaged here) and in the prepared one.
+    const std::string in9 = Temp + "/pages_voids_9.tif", out9 = Temp + "/pages_voids_9_prepared.tif";
+    Expect(WriteFloatGeoTIFF(in9, 256, 200, 5.0, 45.0, 0.001, "-9999.9",
+             [&](int r, int c) { return value(r, c) == -9999.0f ? -9999.9f : value(r, c); }) &&
+        Prepare(in9, out9, 64),
+      "nodata -9999.9 written and prepared");
+    for (const std::string& file : { in9, out9 })
+    {
+      vtkNew<vtkGlobePageSource> nines;
+      nines->SetFileName(file.c_str());
+      nines->SetPageSize(64);
+      long checked = 0;
+      std::string at;
+      const long bad = CheckPyramid(nines, { g0 }, false, &checked, at);
+      Expect(bad == 0 && checked > 0,
+        "nodata -9999.9, " + std::string(file == in9 ? "plain" : "prepared") +
+          ": every level nodata-aware, voids NaN (" + std::to_string(bad) + " of " +
+          std::to_string(checked) + " wrong) " + at);
+    }
+
     // The preparer keeps georeferencing and nodata.
     auto before = ReadHeader(in), after = ReadHeader(out);
     bool same = true;
