@@ -144,13 +144,19 @@ def require_display():
                  + "\nor: bash Utilities/globe.sh python " + " ".join(sys.argv))
 
 
-def show(window, out, interactive):
+def show(window, out, interactive, on_timer=None):
     """The end of every example: an interactive window, or two frames offscreen and a PNG (the
-    second frame uses the first one's lowest visible terrain, read back from the GPU)."""
+    second frame uses the first one's lowest visible terrain, read back from the GPU).
+    on_timer: called every 50 ms in the interactive window (e.g. to render again while
+    streamed pages come in)."""
     if interactive:
         interactor = vtkRenderWindowInteractor()
         interactor.SetInteractorStyle(vtkInteractorStyleTrackballCamera())
         interactor.SetRenderWindow(window)
+        if on_timer:
+            interactor.Initialize()
+            interactor.AddObserver("TimerEvent", lambda obj, event: on_timer())
+            interactor.CreateRepeatingTimer(50)
         window.Render()
         interactor.Start()
         return

@@ -13,6 +13,7 @@ the script reports each frame's page statistics until the picture is final
 (vtkGlobeMapper.IsStreamingIdle), then writes the PNG. Interactive, a timer renders again while
 pages are still coming in. Documentation/streaming.md explains the page cache.
 """
+import argparse
 import os
 import sys
 import time
@@ -34,7 +35,7 @@ def parse_view(parser, text):
 def main(argv=None):
     parser = globe_scene.arguments(__doc__.splitlines()[0], "stream.png", grid=256)
     parser.description = __doc__
-    parser.formatter_class = __import__("argparse").RawDescriptionHelpFormatter
+    parser.formatter_class = argparse.RawDescriptionHelpFormatter
     parser.add_argument("raster", help="the raster to stream (GeoTIFF, or an image with a world file)")
     parser.add_argument("--role", choices=("auto", "height", "color"), default="auto",
                         help="heights or imagery (default: from the channel count)")
@@ -87,22 +88,12 @@ def main(argv=None):
     globe_scene.look_at(renderer, body, view, (view[0], view[1], 0.0), 40.0)
 
     if args.interactive:
-        from vtkmodules.vtkRenderingCore import vtkRenderWindowInteractor
-        from vtkmodules.vtkInteractionStyle import vtkInteractorStyleTrackballCamera
-        interactor = vtkRenderWindowInteractor()
-        interactor.SetInteractorStyle(vtkInteractorStyleTrackballCamera())
-        interactor.SetRenderWindow(window)
-
-        def refine(obj, event):
+        def refine():
             # Frames never wait for the disk: render again until the picture is final.
             if not mapper.IsStreamingIdle():
                 window.Render()
 
-        interactor.Initialize()
-        interactor.AddObserver("TimerEvent", refine)
-        interactor.CreateRepeatingTimer(50)
-        window.Render()
-        interactor.Start()
+        globe_scene.show(window, args.out, True, on_timer=refine)
         return 0
 
     print("frame      ms  resident  loaded  evicted  uploaded")
@@ -119,9 +110,11 @@ def main(argv=None):
         time.sleep(0.01)  # the page readers run on their own threads
     else:
         print("not final after %d frames (a cache smaller than the view needs?)" % args.frames)
-    print("GPU layer memory %.1f MiB (cache %.0f MiB per kind), CPU page cache %.1f MiB" % (
-        mapper.GetLayerSet().GetTextureMemory() / 2.0 ** 20, args.gpu,
-        cache.GetCPUMemoryUsed() / 2.0 ** 20))
+    print("GPU page cache %.2f MiB (atlas %g MiB per kind, and page tables); all layers %.2f MiB; "
+          "CPU page cache %.1f MiB" % (
+              cache.GetGPUMemoryUsed() / 2.0 ** 20, args.gpu,
+              mapper.GetLayerSet().GetTextureMemory() / 2.0 ** 20,
+              cache.GetCPUMemoryUsed() / 2.0 ** 20))
     globe_scene.show(window, args.out, False)
     return 0
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <fstream>
 #include <random>
 #include <string>
 #include <vector>
@@ -148,6 +149,30 @@ struct Checklist
     return this->Failures == 0 ? 0 : 1;
   }
 };
+
+/// The process's resident memory (VmRSS) in MiB; 0 where /proc is not there.
+inline double ResidentMiB()
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+  {
+    if (line.rfind("VmRSS:", 0) == 0)
+    {
+      return std::stod(line.substr(6)) / 1024.0;
+    }
+  }
+  return 0.0;
+}
+
+/// A world file (.tfw, .pgw, ...) for a global w x h image in plate carree: WGS 84 degrees.
+inline void WriteGlobalWorldFile(const std::string& path, int w, int h)
+{
+  std::ofstream f(path);
+  f.precision(17);
+  f << 360.0 / w << "\n0\n0\n" << -180.0 / h << "\n" << -180.0 + 180.0 / w << "\n"
+    << 90.0 - 90.0 / h << "\n";
+}
 
 /// printf into a std::string (up to 1023 characters).
 inline std::string Printf(const char* format, ...) __attribute__((format(printf, 1, 2)));

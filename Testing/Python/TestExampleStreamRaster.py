@@ -4,9 +4,10 @@
 - A missing file exits 1 with a message naming it, and writes no image.
 - Blue Marble (Data/earth/world.tif, 2048 x 1024) streamed in pages of 64 through a 1 MiB GPU
   cache, from 2,000 km over Africa: the script reports the pyramid (6 levels), frames load pages
-  until the picture is final, the GPU layer memory stays within the cache, and the picture is
-  the imagery: the view is covered, and its colours are Blue Marble's (the mean pixel is not the
-  base colour's grey-green).
+  until the picture is final, the GPU layer memory stays within the cache (1 MiB and the page
+  table), and the picture is the imagery: the view is covered, and its colours are Blue
+  Marble's (Africa and the Gulf of Guinea), not the bare globe's blue base colour (mean blue
+  about 17 against 96 for the base colour, which an inset elsewhere on the Earth leaves).
 """
 import os
 import re
@@ -48,15 +49,14 @@ class TestExampleStreamRaster(unittest.TestCase):
         self.assertIsNotNone(final, stdout)
         loaded = [int(m.group(1)) for m in re.finditer(r"^\s*\d+\s+[\d.]+\s+\d+\s+(\d+)", stdout, re.M)]
         self.assertGreater(loaded[-1], 1, stdout)
-        memory = re.search(r"GPU layer memory ([\d.]+) MiB", stdout)
-        self.assertLessEqual(float(memory.group(1)), 1.1, stdout)
+        memory = re.search(r"GPU page cache ([\d.]+) MiB", stdout)
+        self.assertLessEqual(float(memory.group(1)), 1.02, stdout)
         image = Image(self.out)
         pixels = [p for _, _, p in image.pixels()]
         dark = sum(1 for p in pixels if max(p) < 8)
         self.assertLess(dark, len(pixels) // 20, "the globe covers the view")
         mean = [sum(p[k] for p in pixels) / len(pixels) for k in range(3)]
-        # Africa at 2,000 km: ocean blue and desert; the blue channel differs from green.
-        self.assertGreater(abs(mean[2] - mean[1]) + abs(mean[0] - mean[1]), 10, mean)
+        self.assertLess(mean[2], 50, mean)
 
 
 if __name__ == "__main__":
