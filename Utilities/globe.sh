@@ -121,7 +121,8 @@ case "$command" in
     planet="${VTKGLOBE_PLANET_DIR:-$build/planet}"
     planets=()
     for w in ${VTKGLOBE_PLANET_WIDTHS:-2048 8192 21600 43200}; do
-      if [ ! -f "$planet/planet_imagery_$w.tif" ]; then
+      # Both files, each renamed into place only when complete (GlobeMakePlanet).
+      if [ ! -f "$planet/planet_heights_$w.tif" ] || [ ! -f "$planet/planet_imagery_$w.tif" ]; then
         echo "== making the ${w}-wide global rasters (GlobeMakePlanet)"
         "$build/bin/GlobeMakePlanet" "$root/Data" "$planet" --width "$w"
       fi

@@ -34,7 +34,8 @@ def chart_view(title, size=(900, 520)):
     return view, chart
 
 
-def add_line(chart, name_x, name_y, points, rgb, corner=None, points_only=False):
+def add_line(chart, name_x, name_y, points, rgb, corner=None):
+    """A line through the points (markers alone where there are fewer than two)."""
     from vtkmodules.vtkChartsCore import vtkChart
     from vtkmodules.vtkCommonCore import vtkFloatArray
     from vtkmodules.vtkCommonDataModel import vtkTable
@@ -47,10 +48,11 @@ def add_line(chart, name_x, name_y, points, rgb, corner=None, points_only=False)
     for i, (x, y) in enumerate(points):
         table.SetValue(i, 0, x)
         table.SetValue(i, 1, y)
-    plot = chart.AddPlot(vtkChart.POINTS if points_only else vtkChart.LINE)
+    single = len(points) < 2
+    plot = chart.AddPlot(vtkChart.POINTS if single else vtkChart.LINE)
     plot.SetInputData(table, 0, 1)
     plot.SetColor(rgb[0], rgb[1], rgb[2], 255)
-    if points_only:
+    if single:
         plot.SetMarkerSize(9)
     else:
         plot.SetWidth(1.5)
@@ -87,16 +89,16 @@ def main():
     view, chart = chart_view("Flight Earth -> Rainier -> Earth: frame time (%s, %dx%d)" % (
         data.get("gl_renderer", "?"), data["window"][0], data["window"][1]))
     for i, run in enumerate(data["runs"]):
-        add_line(chart, "frame", run["label"], list(enumerate(run["frame_ms"])),
+        add_line(chart, "frame", run["label"], list(enumerate(run["frame_ms"], 1)),
                  COLORS[i % len(COLORS)])
     blocks = data["runs"][0]["blocks"]
-    altitude = add_line(chart, "frame", "altitude (km, right)",
+    altitude = add_line(chart, "frame", "camera height (km, right)",
                         [(b["frame"], b["altitude_m"] / 1000.0) for b in blocks], (0, 0, 0), corner=1)
     altitude.SetWidth(1.0)
     chart.GetAxis(vtkAxis.BOTTOM).SetTitle("frame")
     chart.GetAxis(vtkAxis.LEFT).SetTitle("frame time (ms)")
     chart.GetAxis(vtkAxis.LEFT).SetLogScale(True)
-    chart.GetAxis(vtkAxis.RIGHT).SetTitle("camera altitude (km)")
+    chart.GetAxis(vtkAxis.RIGHT).SetTitle("camera height (km)")
     chart.GetAxis(vtkAxis.RIGHT).SetLogScale(True)
     save(view, os.path.join(args.images, "streaming-flight.png"))
 

@@ -3,7 +3,6 @@
 #include "vtkCommand.h"
 #include "vtkCallbackCommand.h"
 #include "vtkDataArray.h"
-#include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkGlobeRasterReader.h"
@@ -11,7 +10,6 @@
 #include "vtkDataSetAttributes.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
-#include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -257,7 +255,6 @@ struct Level
   std::string Path; // temporary file (levels >= 1)
   std::vector<unsigned char> TileRow;
   std::vector<double> Pending; // the even row of this level, as double
-  bool HasPending = false;
 };
 
 void CloseTIFF(TIFF*& tif)
@@ -484,7 +481,6 @@ bool vtkGlobeRasterPreparer::Write()
       if (r + 1 < level.Height)
       {
         level.Pending.swap(values);
-        level.HasPending = true;
       }
       return; // an odd height's last row is dropped
     }
@@ -532,7 +528,6 @@ bool vtkGlobeRasterPreparer::Write()
           result);
       }
     }
-    level.HasPending = false;
     addRow(l + 1, outRow, out.data());
   };
 

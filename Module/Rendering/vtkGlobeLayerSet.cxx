@@ -1057,11 +1057,13 @@ void vtkGlobeLayerSet::RequestPages(vtkDoubleArray* footprints, int blockPixels,
       }
       vtkGlobeLayer* layer = e->Layer;
       vtkGlobePageSource* pages = layer->GetPageSource();
+      // The cache's description of the pyramid (its levels, its page size); the page source
+      // gives the level-0 size and the page counts for the same page size.
       const int levels = in.Pages->GetNumberOfLevels(layer);
       const int P = in.Pages->GetPageSize();
-      if (levels <= 0)
+      if (levels <= 0 || pages->GetPageSize() != P || pages->GetNumberOfLevels() != levels)
       {
-        continue;
+        continue; // a page size change the next BeginFrame applies
       }
       // Per level: texels per unit of uv (level 0's size / 2^l, as vtkGlobePageCache maps
       // them), page columns and rows.

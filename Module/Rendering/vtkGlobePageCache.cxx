@@ -738,8 +738,10 @@ void vtkGlobePageCache::Request(vtkGlobeLayer* layer, int level, int column, int
 {
   auto& in = *this->Internals;
   LayerState* s = in.Find(layer);
-  if (!s || level < 0 || level >= s->Levels || column < 0 || column >= s->Columns[level] ||
-    row < 0 || row >= s->Rows[level])
+  // Until the next BeginFrame applies a new page size, the pyramids described here are the
+  // old ones: asking for their pages would read levels the page sources no longer have.
+  if (!s || in.AllocatedPageSize != this->PageSize || level < 0 || level >= s->Levels ||
+    column < 0 || column >= s->Columns[level] || row < 0 || row >= s->Rows[level])
   {
     return;
   }

@@ -2,19 +2,23 @@
 // downloaded, nothing committed): a global height raster and a global RGB image of
 // WIDTH x WIDTH/2 posts (default 43200 x 21600, 30 arc-seconds), each the bilinear
 // upsampling of the repository's 2-degree relief / Blue Marble image plus deterministic
-// fractal detail (value noise, 8 octaves from 1 degree down to 2 posts), written as plain
+// fractal detail (value noise, octaves from a 1-degree wavelength halving while it stays at
+// least 2 posts long, 8 at most: 6 at W = 43200, the finest 3.75 posts), written as plain
 // striped TIFFs with world files and then prepared (tiled, MIP-mapped) with
 // vtkGlobeRasterPreparer. The plain files are removed afterwards.
 //
 //   GlobeMakePlanet DATA_DIR OUT_DIR [--width 43200] [--keep-plain]
+// (WIDTH even, at least 360.) Each file is prepared under a temporary name and renamed when
+// complete: an interrupted run leaves no file that looks finished.
 //
 // Writes OUT_DIR/planet_heights_<W>.tif (float, metres) and OUT_DIR/planet_imagery_<W>.tif
 // (RGB): 3.7 GB and 2.8 GB at full resolution before their levels (a third more with them).
+#include "vtkGlobeTestHelpers.h"
+
 #include "vtkGlobeLayer.h"
 #include "vtkGlobeRasterPreparer.h"
 #include "vtkNew.h"
 #include "vtkDataArray.h"
-#include "vtkCommand.h"
 
 #include <tiffio.h>
 
@@ -23,7 +27,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstring>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -56,7 +60,7 @@ double Noise(double x, double y, int octave, int64_t period)
 }
 
 // Fractal detail at post (x, y) of a W-wide global grid: wavelengths from 1 degree halving
-// to 2 posts, amplitude halving with them; wraps east-west.
+// to 2 posts (8 at most), amplitude halving with them; wraps east-west.
 double Fractal(double x, double y, int W)
 {
   double sum = 0.0, amplitude = 1.0;
@@ -73,7 +77,7 @@ double Fractal(double x, double y, int W)
 
 // Bilinear sample (wrapping east-west) of a north-up raster of w x h x c at the centre of
 // post (x, y) of a W x H grid.
-double Sample(vtkDataArray* data, int w, int h, int c, int component, double x, double y, int W, int H)
+double Sample(vtkDataArray* data, int w, int h, int component, double x, double y, int W, int H)
 {
   const double u = (x + 0.5) / W * w - 0.5, v = (y + 0.5) / H * h - 0.5;
   const int i = static_cast<int>(std::floor(u)), j = static_cast<int>(std::floor(v));
@@ -83,15 +87,7 @@ double Sample(vtkDataArray* data, int w, int h, int c, int component, double x, 
     jj = std::clamp(jj, 0, h - 1);
     return data->GetComponent(static_cast<vtkIdType>(jj) * w + ii, component);
   };
-  (void)c;
   return (1 - fv) * ((1 - fu) * at(i, j) + fu * at(i + 1, j)) + fv * ((1 - fu) * at(i, j + 1) + fu * at(i + 1, j + 1));
-}
-
-void WriteWorldFile(const std::string& path, int W, int H)
-{
-  std::ofstream f(path);
-  f.precision(17);
-  f << 360.0 / W << "\n0\n0\n" << -180.0 / H << "\n" << -180.0 + 180.0 / W << "\n" << 90.0 - 90.0 / H << "\n";
 }
 
 // Writes rows of a plain striped TIFF; row(y, buffer) fills one row; rows are made on all
@@ -151,16 +147,19 @@ bool WritePlain(const std::string& path, int W, int H, int channels, bool floats
 
 bool Prepare(const std::string& in, const std::string& out)
 {
+  const std::string partial = out + ".partial";
   vtkNew<vtkGlobeRasterPreparer> preparer;
   preparer->SetInputFileName(in.c_str());
-  preparer->SetFileName(out.c_str());
+  preparer->SetFileName(partial.c_str());
   preparer->SetTileSize(256);
   const bool ok = preparer->Write();
   if (!ok)
   {
     std::fprintf(stderr, "preparing %s failed: %s\n", in.c_str(), preparer->GetLastError());
+    return false;
   }
-  return ok;
+  std::filesystem::rename(partial, out);
+  return true;
 }
 } // namespace
 
@@ -176,14 +175,27 @@ int main(int argc, char* argv[])
   bool keep = false;
   for (int i = 3; i < argc; ++i)
   {
-    if (std::string(argv[i]) == "--width" && i + 1 < argc)
+    const std::string arg = argv[i];
+    if (arg == "--width" && i + 1 < argc)
     {
-      W = std::max(360, std::atoi(argv[++i]) / 2 * 2);
+      W = std::atoi(argv[++i]);
     }
-    else if (std::string(argv[i]) == "--keep-plain")
+    else if (arg == "--keep-plain")
     {
       keep = true;
     }
+    else
+    {
+      std::fprintf(stderr, "GlobeMakePlanet: unknown argument '%s'\n"
+                           "usage: GlobeMakePlanet DATA_DIR OUT_DIR [--width 43200] [--keep-plain]\n",
+        arg.c_str());
+      return 2;
+    }
+  }
+  if (W < 360 || W % 2 != 0)
+  {
+    std::fprintf(stderr, "GlobeMakePlanet: --width must be even and at least 360 (got %d)\n", W);
+    return 2;
   }
   const int H = W / 2;
   std::filesystem::create_directories(out);
@@ -209,11 +221,11 @@ int main(int argc, char* argv[])
     auto* v = reinterpret_cast<float*>(row);
     for (int x = 0; x < W; ++x)
     {
-      const double base = Sample(h, rw, rh, 1, 0, x, y, W, H);
+      const double base = Sample(h, rw, rh, 0, x, y, W, H);
       v[x] = static_cast<float>(base + (base > 0 ? 600.0 : 150.0) * Fractal(x, y, W));
     }
   });
-  WriteWorldFile(out + "/planet_heights_" + tag + "_plain.tfw", W, H);
+  vtkGlobeTest::WriteGlobalWorldFile(out + "/planet_heights_" + tag + "_plain.tfw", W, H);
   ok = ok && WritePlain(imageryPlain, W, H, 3, false, [&](int y, unsigned char* row) {
     for (int x = 0; x < W; ++x)
     {
@@ -221,11 +233,11 @@ int main(int argc, char* argv[])
       for (int k = 0; k < 3; ++k)
       {
         row[3 * x + k] = static_cast<unsigned char>(
-          std::clamp(Sample(c, cw, ch, 4, k, x, y, W, H) * shade, 0.0, 255.0));
+          std::clamp(Sample(c, cw, ch, k, x, y, W, H) * shade, 0.0, 255.0));
       }
     }
   });
-  WriteWorldFile(out + "/planet_imagery_" + tag + "_plain.tfw", W, H);
+  vtkGlobeTest::WriteGlobalWorldFile(out + "/planet_imagery_" + tag + "_plain.tfw", W, H);
   std::printf("  plain rasters written in %.0f s\n",
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   ok = ok && Prepare(heightsPlain, out + "/planet_heights_" + tag + ".tif");

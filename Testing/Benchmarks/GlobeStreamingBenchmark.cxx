@@ -1,35 +1,35 @@
 // GlobeStreamingBenchmark: what streaming costs (after Kooima's thesis, section 5.1). A scripted
 // flight from a whole-Earth view down to a close-up of Mount Rainier and back, starting with an
 // empty cache, over global height and imagery layers (GlobeMakePlanet's) plus the real 90 m
-// Rainier inset; each data set given runs streamed, and those small enough also in-core, in
-// the same process, with the same camera path. A program, not a test: it prints a table and
-// writes JSON; Utilities/plot_streaming.py plots it (`bash Utilities/globe.sh bench-streaming`).
+// Rainier inset; each data set given runs streamed, and those small enough also in-core (after
+// the streamed run, so that its whole-file reads warm neither the file cache nor the heap of
+// the streamed run), in the same process, with the same camera path. A program, not a test:
+// it prints a table and writes JSON; Utilities/plot_streaming.py plots it
+// (`bash Utilities/globe.sh bench-streaming`).
 //
 //   GlobeStreamingBenchmark --data DATA_DIR --planet WIDTH:HEIGHTS.tif:IMAGERY.tif ...
-//       [--frames 240] [--window 640x480] [--grid 256] [--gpu 128] [--incore-max 8192]
+//       [--frames 240] [--window 640x480] [--grid 256] [--gpu 120] [--incore-max 8192]
 //       [--json PATH]
 //
-// Per block of 10 frames: median frame time (Render + glFinish, wall clock); pages loaded and
-// evicted and bytes uploaded in the block; CPU memory (VmRSS) and GPU layer memory
-// (vtkGlobeLayerSet::GetTextureMemory: textures, or page atlases and tables) at its end; and,
-// for a streamed run whose data also ran in-core, the mean absolute RGB difference of the
-// block's last frame from the in-core frame (0..255). Also: the first frame's time, and the
-// steady frame time (median over the second half of each leg's last third, when the cache has
-// settled). Frames never wait for pages (vtkGlobeMapper::WaitForPages off): the picture
-// refines over the following frames, as in an interactive application.
+// Per block of 10 frames: median frame time (Render + glFinish, wall clock); the camera's
+// height at the block's last frame; pages loaded and evicted and bytes uploaded in the block;
+// CPU memory (VmRSS), GPU layer memory (vtkGlobeLayerSet::GetTextureMemory: textures, or the
+// page atlases as allocated and the tables) and the GPU memory of the resident pages, at its
+// end; and, for a streamed run whose data also ran in-core, the mean absolute RGB difference
+// of the block's last frame from the in-core frame (0..255). Also: the first frame's time,
+// and the steady frame time: the median over frames 5/12 to 7/12 of the flight (the close-up,
+// cache warm) and its last sixth (far, warm). Frames never wait for pages
+// (vtkGlobeMapper::WaitForPages off): the picture refines over the following frames, as in an
+// interactive application.
 #include "vtkGlobeRenderingTestHelpers.h"
+#include "vtkGlobeTestHelpers.h"
 
-#include "vtkActor.h"
-#include "vtkCamera.h"
-#include "vtkGlobeEllipsoid.h"
 #include "vtkGlobeLayer.h"
 #include "vtkGlobeLayerSet.h"
 #include "vtkGlobeMapper.h"
 #include "vtkGlobePageCache.h"
 #include "vtkGlobeRasterReader.h"
-#include "vtkNew.h"
 #include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtk_glew.h"
 
@@ -55,7 +55,7 @@ struct Block
   int Frame = 0;
   double Ms = 0, Altitude = 0;
   long long Loaded = 0, Evicted = 0, Uploaded = 0;
-  double RSS = 0, GPU = 0, Error = -1;
+  double RSS = 0, GPU = 0, Resident = 0, Error = -1;
 };
 
 // The OpenGL renderer, read while a context is current.
@@ -70,20 +70,6 @@ struct Run
   std::vector<double> Frames;
 };
 
-double RSSMiB()
-{
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while (std::getline(status, line))
-  {
-    if (line.rfind("VmRSS:", 0) == 0)
-    {
-      return std::stod(line.substr(6)) / 1024.0;
-    }
-  }
-  return 0;
-}
-
 double Median(std::vector<double> v)
 {
   if (v.empty())
@@ -95,33 +81,31 @@ double Median(std::vector<double> v)
 }
 
 // The camera at frame i of n: down from 20,000 km over Rainier to 6 km above its flank, looking
-// at the summit (altitude log-linear, tilt growing near the ground), then back up.
-void Place(vtkRenderer* renderer, vtkGlobeEllipsoid* body, int i, int n, double& altitude)
+// at the summit (altitude log-linear, tilt growing near the ground), then back up. Gives the
+// camera's height above the ellipsoid.
+double Place(vtkGlobeTest::Scene& scene, int i, int n)
 {
   const double half = 0.5 * (n - 1);
   const double t = i <= half ? i / half : (n - 1 - i) / half; // 0 far .. 1 near
-  altitude = std::exp(std::log(2.0e7) + t * (std::log(6000.0) - std::log(2.0e7)));
+  const double altitude = std::exp(std::log(2.0e7) + t * (std::log(6000.0) - std::log(2.0e7)));
   const double summit[3] = { -121.7603, 46.8523, 4392.0 };
   // Offset south-west with height, so the close-up looks across the mountain.
   const double back = std::min(1.0, altitude / 40000.0);
   const double camera[3] = { summit[0] - 0.25 * (1.0 - back), summit[1] - 0.2 * (1.0 - back),
     altitude + (1.0 - back) * 2000.0 };
-  vtkGlobeTest::LookAt(renderer, body, camera, summit, 40.0);
-  renderer->ResetCameraClippingRange();
+  scene.Look(camera, summit, 40.0);
+  return camera[2];
 }
 
 Run Fly(const std::string& data, const Planet& planet, bool streamed, int frames, int w, int h,
-  int grid, double gpu, const std::vector<std::vector<unsigned char>>* reference,
-  std::vector<std::vector<unsigned char>>* keep)
+  int grid, double gpu, std::vector<std::vector<unsigned char>>& images)
 {
   Run run;
   run.Width = planet.Width;
   run.Mode = streamed ? "streamed" : "in-core";
   run.Label = run.Mode + " " + std::to_string(planet.Width);
-  vtkNew<vtkGlobeEllipsoid> body;
-  vtkNew<vtkGlobeMapper> mapper;
-  mapper->SetEllipsoid(body);
-  mapper->SetGridResolution(grid);
+  vtkGlobeTest::Scene scene(w, h, grid);
+  vtkGlobeMapper* mapper = scene.Mapper;
   mapper->GetPageCache()->SetGPUMemory(gpu);
   auto add = [&](const std::string& file, bool height) {
     auto layer = vtkSmartPointer<vtkGlobeLayer>::New();
@@ -141,23 +125,14 @@ Run Fly(const std::string& data, const Planet& planet, bool streamed, int frames
   add(planet.Heights, true);
   add(data + "/earth/mt_rainier_90m.tif", true);
   add(planet.Imagery, false);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(actor);
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->SetSize(w, h);
-  window->AddRenderer(renderer);
+  vtkRenderWindow* window = scene.Window;
   vtkGlobePageCache* cache = mapper->GetPageCache();
   Block block;
   std::vector<double> times;
   long long loaded = 0, evicted = 0, uploaded = 0;
   for (int i = 0; i < frames; ++i)
   {
-    double altitude = 0;
-    Place(renderer, body, i, frames, altitude);
+    const double altitude = Place(scene, i, frames);
     const auto start = std::chrono::steady_clock::now();
     window->Render();
     glFinish();
@@ -183,27 +158,13 @@ Run Fly(const std::string& data, const Planet& planet, bool streamed, int frames
       loaded = cache->GetNumberOfLoadedPages();
       evicted = cache->GetNumberOfEvictedPages();
       uploaded = cache->GetBytesUploaded();
-      block.RSS = RSSMiB();
+      block.RSS = vtkGlobeTest::ResidentMiB();
       block.GPU = mapper->GetLayerSet()->GetTextureMemory() / 1048576.0;
+      const double pageTexels = cache->GetPageSize() + 2.0 * vtkGlobePageCache::Border;
+      block.Resident = cache->GetNumberOfResidentPages() * pageTexels * pageTexels * 4.0 / 1048576.0;
       run.PeakRSS = std::max(run.PeakRSS, block.RSS);
       run.PeakGPU = std::max(run.PeakGPU, block.GPU);
-      unsigned char* pixels = window->GetPixelData(0, 0, w - 1, h - 1, 1);
-      std::vector<unsigned char> image(pixels, pixels + 3 * w * h);
-      delete[] pixels;
-      const size_t index = static_cast<size_t>(i / 10);
-      if (reference && index < reference->size())
-      {
-        double sum = 0;
-        for (size_t k = 0; k < image.size(); ++k)
-        {
-          sum += std::abs(static_cast<int>(image[k]) - static_cast<int>((*reference)[index][k]));
-        }
-        block.Error = sum / image.size();
-      }
-      if (keep)
-      {
-        keep->push_back(std::move(image));
-      }
+      images.push_back(vtkGlobeTest::ReadPixels(window));
       run.Blocks.push_back(block);
       times.clear();
     }
@@ -279,27 +240,40 @@ int main(int argc, char* argv[])
     return 2;
   }
   std::vector<Run> runs;
-  for (const Planet& p : planets)
-  {
-    std::vector<std::vector<unsigned char>> incoreImages;
-    const bool incore = p.Width <= incoreMax;
-    if (incore)
-    {
-      runs.push_back(Fly(data, p, false, frames, w, h, grid, gpu, nullptr, &incoreImages));
-      std::printf("%-16s first %7.0f ms, steady %6.1f ms, peak RSS %6.0f MiB, GPU %6.1f MiB\n",
-        runs.back().Label.c_str(), runs.back().FirstMs, runs.back().SteadyMs, runs.back().PeakRSS,
-        runs.back().PeakGPU);
-    }
-    runs.push_back(Fly(data, p, true, frames, w, h, grid, gpu, incore ? &incoreImages : nullptr, nullptr));
-    const Run& r = runs.back();
+  auto print = [](const Run& r) {
     std::printf("%-16s first %7.0f ms, steady %6.1f ms, peak RSS %6.0f MiB, GPU %6.1f MiB\n",
       r.Label.c_str(), r.FirstMs, r.SteadyMs, r.PeakRSS, r.PeakGPU);
-    std::printf("  %6s %10s %8s %7s %7s %9s %8s %8s %6s\n", "frames", "altitude", "ms", "loaded",
-      "evicted", "uploaded", "RSS", "GPU", "error");
+  };
+  for (const Planet& p : planets)
+  {
+    std::vector<std::vector<unsigned char>> streamedImages, incoreImages;
+    runs.push_back(Fly(data, p, true, frames, w, h, grid, gpu, streamedImages));
+    const size_t streamedRun = runs.size() - 1;
+    if (p.Width <= incoreMax)
+    {
+      runs.push_back(Fly(data, p, false, frames, w, h, grid, gpu, incoreImages));
+      print(runs.back());
+      // The streamed run's blocks against the in-core frames.
+      for (size_t k = 0; k < runs[streamedRun].Blocks.size() && k < incoreImages.size(); ++k)
+      {
+        const std::vector<unsigned char>& a = streamedImages[k];
+        const std::vector<unsigned char>& b = incoreImages[k];
+        double sum = 0;
+        for (size_t q = 0; q < a.size() && q < b.size(); ++q)
+        {
+          sum += std::abs(static_cast<int>(a[q]) - static_cast<int>(b[q]));
+        }
+        runs[streamedRun].Blocks[k].Error = a.empty() ? -1.0 : sum / a.size();
+      }
+    }
+    const Run& r = runs[streamedRun];
+    print(r);
+    std::printf("  %6s %10s %8s %7s %7s %9s %8s %8s %9s %6s\n", "frames", "height m", "ms",
+      "loaded", "evicted", "uploaded", "RSS", "GPU", "resident", "error");
     for (const Block& b : r.Blocks)
     {
-      std::printf("  %6d %10.0f %8.1f %7lld %7lld %8.1fM %7.0fM %7.1fM %6s\n", b.Frame, b.Altitude,
-        b.Ms, b.Loaded, b.Evicted, b.Uploaded / 1048576.0, b.RSS, b.GPU,
+      std::printf("  %6d %10.0f %8.1f %7lld %7lld %8.1fM %7.0fM %7.1fM %8.1fM %6s\n", b.Frame,
+        b.Altitude, b.Ms, b.Loaded, b.Evicted, b.Uploaded / 1048576.0, b.RSS, b.GPU, b.Resident,
         b.Error < 0 ? "-" : std::to_string(b.Error).substr(0, 5).c_str());
     }
   }
@@ -327,7 +301,8 @@ int main(int argc, char* argv[])
         out << (k ? ", " : "") << "{\"frame\": " << b.Frame << ", \"altitude_m\": " << b.Altitude
             << ", \"ms\": " << b.Ms << ", \"loaded\": " << b.Loaded << ", \"evicted\": " << b.Evicted
             << ", \"uploaded_bytes\": " << b.Uploaded << ", \"rss_mib\": " << b.RSS
-            << ", \"gpu_mib\": " << b.GPU << ", \"error\": " << (b.Error < 0 ? std::string("null") : std::to_string(b.Error))
+            << ", \"gpu_mib\": " << b.GPU << ", \"resident_gpu_mib\": " << b.Resident
+            << ", \"error\": " << (b.Error < 0 ? std::string("null") : std::to_string(b.Error))
             << "}";
       }
       out << "]}";
