@@ -12,7 +12,8 @@
  *   actor->SetMapper(mapper);
  *   renderer->AddActor(actor);
  * @endcode
- * The actor's matrix places the body-fixed frame in the world. Each frame (DESIGN.md §4):
+ * The actor's matrix places the body-fixed frame in the world. Each frame
+ * (Documentation/architecture.md, "One frame"):
  *  1. CPU, in double: the eye in the body frame, the reference spheres and the sampling camera
  *     (vtkGlobeProjectiveGrid); the primary sphere is the lowest terrain seen in the previous
  *     frame (GPU min reduction), or the lowest data after a jump and on the first frame;

@@ -3,7 +3,8 @@
  * @brief   The CPU half of spherical Projective Grid Mapping for one frame, in double.
  *
  * From the camera, the body (a vtkGlobeEllipsoid placed by the actor's matrix) and the range
- * of terrain heights, computes what the grid pass needs (DESIGN.md §4-5):
+ * of terrain heights, computes what the grid pass needs (Documentation/rendering.md, "One frame",
+ * "PGM as implemented" and "Errata and degenerate cases"):
  *  - the eye in the body's scaled space (x/a, y/b, z/c), where the ellipsoid is the unit
  *    sphere, its distance d, the nadir;
  *  - the primary reference sphere r_p (below all visible terrain), the maximum sphere r_max

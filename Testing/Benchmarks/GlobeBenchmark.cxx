@@ -1,7 +1,8 @@
 // GlobeBenchmark: what accuracy costs in time. On fixed scenes it sweeps the settings that trade
 // accuracy for time and puts every error next to its milliseconds; VTK's naive globes run on the
 // same scenes, in the same window, in the same run. A program, not a test: it prints tables and
-// writes JSON, and asserts nothing (DESIGN.md §9). Utilities/plot_benchmark.py turns the JSON
+// writes JSON, and asserts nothing (Documentation/accuracy-vs-time.md, "How to run";
+// architecture.md, "How it is tested"). Utilities/plot_benchmark.py turns the JSON
 // into Documentation/images/accuracy-vs-time-<scene>.png and the Pareto fronts;
 // `bash Utilities/globe.sh bench` runs both.
 //
@@ -222,7 +223,7 @@ Stats Summarize(std::vector<double> values)
   return s;
 }
 
-// The GPU stages vtkGlobeMapper times (DESIGN.md §4).
+// The GPU stages vtkGlobeMapper times (Documentation/architecture.md, "One frame").
 enum Stage
 {
   PGMStage,

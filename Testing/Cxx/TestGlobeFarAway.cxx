@@ -1,5 +1,6 @@
 // A camera 200,000 km away: beyond ~92,000 km the secondary sphere's radius d cos(gamma_0) is
-// negative and it vanishes (DESIGN.md §5); the planet is a small disc, still exact.
+// negative and it vanishes (Documentation/rendering.md, "Errata and degenerate cases"); the
+// planet is a small disc, still exact.
 #include "vtkGlobeProjectiveGrid.h"
 #include "vtkGlobeRenderingTestHelpers.h"
 #include "vtkRegressionTestImage.h"

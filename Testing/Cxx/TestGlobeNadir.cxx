@@ -1,6 +1,7 @@
 // Looking straight down the nadir from 12 km over Mount Rainier, where the cross-section basis
-// of PGM degenerates for the central ray (DESIGN.md §8). Numeric: the terrain bound at every
-// checked pixel, no NaN, and the centre pixel lies below the camera on the summit massif.
+// of PGM degenerates for the central ray (Documentation/rendering.md, "Errata and degenerate
+// cases"). Numeric: the terrain bound at every checked pixel, no NaN, and the centre pixel lies
+// below the camera on the summit massif.
 #include "vtkGlobeRenderingTestHelpers.h"
 #include "vtkRegressionTestImage.h"
 

@@ -1,7 +1,8 @@
-// The errata-prone spots of PGM (DESIGN.md §5, §8), on the very text the GPU runs
-// (globe_pgm.glsl compiled as C++ in float, vtkGlobeShaderMath::f) against a long-double
-// reference ray/sphere intersection. No GL: the grid's CPU set-up (vtkGlobeProjectiveGrid)
-// supplies the frame parameters as the mapper uploads them (rounded to float).
+// The errata-prone spots of PGM (Documentation/rendering.md, "PGM as implemented" and "Errata
+// and degenerate cases"), on the very text the GPU runs (globe_pgm.glsl compiled as C++ in
+// float, vtkGlobeShaderMath::f) against a long-double reference ray/sphere intersection. No
+// GL: the grid's CPU set-up (vtkGlobeProjectiveGrid) supplies the frame parameters as the
+// mapper uploads them (rounded to float).
 //  1. Near-nadir rays (omega 0 .. 1e-3 rad) and the ray exactly along the nadir (the
 //     cross-section basis degenerates: any perpendicular), at 1 m .. 36,000 km.
 //  2. Grazing rays at the tangent angle (tau0 (1 - 1e-2 .. 1e-7)) and just past it, with the eye
