@@ -145,7 +145,7 @@ def build(size, grid, track=None, data=globe_scene.DATA, interactive=False):
 
 
 def main(argv=None):
-    parser = globe_scene.arguments(__doc__.splitlines()[0], "drape_track.png")
+    parser = globe_scene.arguments(__doc__, "drape_track.png")
     parser.add_argument("--track", metavar="FILE.csv",
                         help="lon,lat,height lines (default: a loop around the summit)")
     args = parser.parse_args(argv)

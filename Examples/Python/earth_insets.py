@@ -36,7 +36,7 @@ def build(view, data, size, grid, insets=True, interactive=False):
 
 
 def main(argv=None):
-    parser = globe_scene.arguments(__doc__.splitlines()[0], "earth_insets.png")
+    parser = globe_scene.arguments(__doc__, "earth_insets.png")
     parser.add_argument("--view", choices=sorted(VIEWS), default="earth",
                         help="viewpoint (default: %(default)s)")
     parser.add_argument("--no-insets", action="store_true",

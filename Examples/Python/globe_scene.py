@@ -28,9 +28,10 @@ except ImportError:
 DATA = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Data"))
 
 
-def arguments(description, default_out, size=(800, 600), grid=512):
-    """The command line every example shares; add your own options to the returned parser."""
-    parser = argparse.ArgumentParser(description=description)
+def arguments(doc, default_out, size=(800, 600), grid=512):
+    """The command line every example shares; add your own options to the returned parser.
+    doc: the script's docstring; --help shows its first paragraph, joined into one."""
+    parser = argparse.ArgumentParser(description=" ".join(doc.strip().split("\n\n")[0].split()))
     parser.add_argument("--out", default=default_out,
                         help="PNG file to write offscreen (default: %(default)s)")
     parser.add_argument("--interactive", action="store_true",

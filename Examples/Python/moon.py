@@ -41,7 +41,7 @@ def build(data, size, grid, distance=DISTANCE, interactive=False):
 
 
 def main(argv=None):
-    parser = globe_scene.arguments(__doc__.splitlines()[0], "moon.png")
+    parser = globe_scene.arguments(__doc__, "moon.png")
     parser.add_argument("--distance", type=float, default=DISTANCE,
                         help="camera distance from the centre in metres (default: %(default)g)")
     args = parser.parse_args(argv)

@@ -114,7 +114,7 @@ def build(size, grid, anomaly, data=globe_scene.DATA, interactive=False):
 
 
 def main(argv=None):
-    parser = globe_scene.arguments(__doc__.splitlines()[0], "satellite_orbit.png")
+    parser = globe_scene.arguments(__doc__, "satellite_orbit.png")
     parser.add_argument("--anomaly", type=float, default=CAMERA_ANOMALY,
                         help="where the satellite is, degrees along the orbit from its ascending "
                         "node (default %(default)g: in front of the globe; +180: behind it)")

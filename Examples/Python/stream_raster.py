@@ -33,7 +33,7 @@ def parse_view(parser, text):
 
 
 def main(argv=None):
-    parser = globe_scene.arguments(__doc__.splitlines()[0], "stream.png", grid=256)
+    parser = globe_scene.arguments(__doc__, "stream.png", grid=256)
     parser.description = __doc__
     parser.formatter_class = argparse.RawDescriptionHelpFormatter
     parser.add_argument("raster", help="the raster to stream (GeoTIFF, or an image with a world file)")

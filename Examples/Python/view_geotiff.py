@@ -124,7 +124,7 @@ def build(layer, size, grid, data=globe_scene.DATA, interactive=False):
 
 
 def main(argv=None):
-    parser = globe_scene.arguments(__doc__.splitlines()[0], "geotiff.png")
+    parser = globe_scene.arguments(__doc__, "geotiff.png")
     parser.description = __doc__
     parser.formatter_class = __import__("argparse").RawDescriptionHelpFormatter
     parser.add_argument("geotiff", help="the GeoTIFF file to show")
