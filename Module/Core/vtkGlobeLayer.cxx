@@ -1,4 +1,5 @@
 #include "vtkGlobeLayer.h"
+#include "vtkGlobeMapProjection.h"
 
 #include "vtkAlgorithmOutput.h"
 #include "vtkCallbackCommand.h"
@@ -679,9 +680,18 @@ void vtkGlobeLayer::GetProjectedGeoTransform(double origin[2], double pixelSize[
 
 bool vtkGlobeLayer::IsGlobal()
 {
+  if (!this->Valid)
+  {
+    return false;
+  }
+  if (this->ModelType == Projected)
+  {
+    return vtkGlobeMapProjection::SpansAllLongitudes(
+      this->EPSG, this->Internals->PixelSize[0], this->RasterWidth);
+  }
   const double* e = this->Internals->Extent;
   // Tolerate rounding in the pixel size (e.g. 360 / 2048 written with 15 digits).
-  return this->Valid && this->ModelType == Geographic && e[1] - e[0] >= 360.0 - 1e-7;
+  return this->ModelType == Geographic && e[1] - e[0] >= 360.0 - 1e-7;
 }
 
 double vtkGlobeLayer::GetDegreesPerPixel(int axis)

@@ -401,7 +401,12 @@ public:
   double GetMaximumValue();
   ///@}
 
-  /// A Geographic layer whose extent spans 360 degrees of longitude.
+  /**
+   * A layer that spans all longitudes and so wraps east-west, without a seam or a feathered
+   * border at the antimeridian: a Geographic layer 360 degrees wide, or a Projected one in a
+   * cylindrical projection (equirectangular, Mercator, Web Mercator) within half a pixel of a
+   * whole turn wide (vtkGlobeMapProjection::SpansAllLongitudes).
+   */
   bool IsGlobal();
 
   /// Degrees per pixel along x (axis 0) or y (axis 1); Geographic layers only, else NaN.

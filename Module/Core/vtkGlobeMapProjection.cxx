@@ -1,5 +1,6 @@
 #include "vtkGlobeMapProjection.h"
 
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 
 #include <GeographicLib/LambertConformalConic.hpp>
@@ -170,6 +171,19 @@ bool vtkGlobeMapProjection::SetToUTM(int zone, bool north)
 //------------------------------------------------------------------------------
 bool vtkGlobeMapProjection::SetFromEPSG(int code)
 {
+  if (!this->SetFromEPSGQuietly(code))
+  {
+    vtkErrorMacro(<< "SetFromEPSG: EPSG:" << code
+                  << " is not a supported projection (supported: 4326, 4087, 32662, 3413, 3031, "
+                     "3995, 3976, 3032, 32661, 32761, 3395, 3857, 326zz and 327zz); the "
+                     "projection is unchanged.");
+    return false;
+  }
+  return true;
+}
+
+bool vtkGlobeMapProjection::SetFromEPSGQuietly(int code)
+{
   const double a = this->SemiMajorAxis, f = this->Flattening;
   this->SemiMajorAxis = 6378137.0;
   this->Flattening = 1.0 / 298.257223563;
@@ -225,14 +239,49 @@ bool vtkGlobeMapProjection::SetFromEPSG(int code)
   {
     this->SemiMajorAxis = a;
     this->Flattening = f;
-    vtkErrorMacro(<< "SetFromEPSG: EPSG:" << code
-                  << " is not a supported projection (supported: 4326, 4087, 32662, 3413, 3031, "
-                     "3995, 3976, 3032, 32661, 32761, 3395, 3857, 326zz and 327zz); the "
-                     "projection is unchanged.");
     return false;
   }
   this->EPSG = code;
   return true;
+}
+
+//------------------------------------------------------------------------------
+double vtkGlobeMapProjection::GetMapUnitsPerRadianOfLongitude()
+{
+  const double a = this->SemiMajorAxis, f = this->Flattening;
+  switch (this->Kind)
+  {
+    case Geographic:
+      return 1.0 / Deg;
+    case Equirectangular:
+      return a * std::cos(this->StandardParallel * Deg);
+    case Mercator:
+    case WebMercator:
+    {
+      // Web Mercator: spherical formulas (e = 0) on the ellipsoid's semi-major axis.
+      const double e2 = this->Kind == WebMercator ? 0.0 : f * (2.0 - f);
+      const double s1 = std::sin(this->StandardParallel * Deg);
+      return a * this->ScaleFactor * std::cos(this->StandardParallel * Deg) /
+        std::sqrt(1.0 - e2 * s1 * s1);
+    }
+    default:
+      return 0.0;
+  }
+}
+
+bool vtkGlobeMapProjection::SpansAllLongitudes(double pixelWidth, int width)
+{
+  const double turn = 2.0 * Pi * this->GetMapUnitsPerRadianOfLongitude();
+  // Within half a pixel of a whole turn the wrap's misregistration is below half a pixel,
+  // where a feathered seam would fade a whole band to the base colour.
+  return turn > 0.0 && Finite(pixelWidth) && pixelWidth > 0.0 && width > 0 &&
+    pixelWidth * width >= turn - 0.5 * pixelWidth;
+}
+
+bool vtkGlobeMapProjection::SpansAllLongitudes(int code, double pixelWidth, int width)
+{
+  vtkNew<vtkGlobeMapProjection> projection;
+  return projection->SetFromEPSGQuietly(code) && projection->SpansAllLongitudes(pixelWidth, width);
 }
 
 //------------------------------------------------------------------------------
@@ -569,22 +618,19 @@ bool vtkGlobeMapProjection::ComputeShaderParametersDouble(const double origin[2]
   switch (this->Kind)
   {
     case Geographic:
-      m[0] = 1.0 / Deg / mapWidth;
+      m[0] = this->GetMapUnitsPerRadianOfLongitude() / mapWidth;
       m[3] = -1.0 / Deg / mapHeight;
       break;
     case Equirectangular:
-      m[0] = a * std::cos(this->StandardParallel * Deg) / mapWidth;
+      m[0] = this->GetMapUnitsPerRadianOfLongitude() / mapWidth;
       m[3] = -a / mapHeight;
       break;
     case Mercator:
     case WebMercator:
     {
-      const double e2 = e * e;
-      const double s1 = std::sin(this->StandardParallel * Deg);
-      const double k0 = this->ScaleFactor * std::cos(this->StandardParallel * Deg) /
-        std::sqrt(1.0 - e2 * s1 * s1);
-      m[0] = a * k0 / mapWidth;
-      m[3] = -a * k0 / mapHeight;
+      const double aK0 = this->GetMapUnitsPerRadianOfLongitude();
+      m[0] = aK0 / mapWidth;
+      m[3] = -aK0 / mapHeight;
       break;
     }
     case PolarStereographic:

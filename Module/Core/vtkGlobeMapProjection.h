@@ -171,6 +171,23 @@ public:
    */
   const char* GetShaderFunctionName();
 
+  /**
+   * Map units per radian of longitude along the x axis of a cylindrical projection
+   * (Geographic: degrees, Equirectangular: a cos(standard parallel), Mercator: a k0, Web
+   * Mercator: a); 0 for the other kinds, whose x is not proportional to longitude.
+   */
+  double GetMapUnitsPerRadianOfLongitude();
+
+  /**
+   * Whether a raster `width` pixels of `pixelWidth` map units wide spans all longitudes, so it
+   * wraps east-west (no seam, no feather at the antimeridian): cylindrical kinds only, within
+   * half a pixel of one whole turn (a wider raster counts too). Geographic rasters keep
+   * vtkGlobeLayer::IsGlobal's own rule.
+   */
+  bool SpansAllLongitudes(double pixelWidth, int width);
+  /// The same for a raster in EPSG:`code`; false for unsupported codes (without an error).
+  static bool SpansAllLongitudes(int code, double pixelWidth, int width);
+
 protected:
   vtkGlobeMapProjection();
   ~vtkGlobeMapProjection() override;
@@ -196,6 +213,7 @@ private:
   void SetParameters(int kind, double centralMeridian, double standardParallel,
     double latitudeOfTrueScale, double scaleFactor, double latitudeOfOrigin, double falseEasting,
     double falseNorthing);
+  bool SetFromEPSGQuietly(int code);
   bool ForwardUnchecked(double lon, double lat, double xy[2]);
   bool InverseUnchecked(double x, double y, double lonLat[2]);
 };

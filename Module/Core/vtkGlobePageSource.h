@@ -28,8 +28,8 @@
  * side taken from the neighbouring texels of the same level, so bilinear filtering inside a
  * page with Border >= 1 matches filtering the whole level (seamless across pages). Outside
  * the raster, texels clamp to the edge texel (north and south always; east and west for
- * regional rasters); a global geographic raster (360 degrees of longitude, the rule of
- * vtkGlobeLayer::IsGlobal) wraps east-west instead, so the westmost border holds the eastmost
+ * regional rasters); a global raster (all longitudes, the rule of vtkGlobeLayer::IsGlobal:
+ * geographic or cylindrical projected) wraps east-west instead, so the westmost border holds the eastmost
  * texels. Pages at the east or south edge that reach past the raster are filled the same way
  * (clamped, or wrapped for global rasters); GetPageBounds gives their full, nominal extent.
  *
@@ -113,7 +113,7 @@ public:
   int GetEPSG();
   bool GetHasNoDataValue();
   double GetNoDataValue();
-  /// A geographic raster spanning 360 degrees of longitude: pages wrap east-west.
+  /// A raster spanning all longitudes (vtkGlobeLayer::IsGlobal's rule): pages wrap east-west.
   bool IsGlobal();
   /// x and y of the north-west outer corner and the pixel size (east, south), as
   /// vtkGlobeRasterReader's GlobeGeoTransform. False when not open.

@@ -265,8 +265,9 @@ int vtkGlobeLayerSet::Update()
     e.Border[2] = 1.0 / std::log(layer->GetProjectionQualityLimit());
     if (!e.Function.empty())
     {
-      e.Wraps = false;
-      e.Border[0] = feather / layer->GetWidth();
+      // A cylindrical projection one whole turn wide wraps like a global geographic layer.
+      e.Wraps = layer->IsGlobal();
+      e.Border[0] = e.Wraps ? 0.0 : feather / layer->GetWidth();
       e.Border[1] = feather / layer->GetHeight();
       order.push_back(&e);
       continue;
@@ -580,7 +581,8 @@ std::string UV(const Entry* e, const std::string& p, const LonLat& c, bool highP
   {
     call += ", " + p + "Projection[" + std::to_string(k) + "]";
   }
-  return call + ")";
+  // A wrapping projected layer's u may round just past 0 or 1 at the antimeridian.
+  return e->Wraps ? "globe_wrapU(" + call + "))" : call + ")";
 }
 
 // A layer's filtered value at texture coordinates `uv` (GLSL): its texture, or for a
@@ -711,7 +713,7 @@ std::string vtkGlobeLayerSet::GetShaderKey(int roles)
     for (const Entry* e : in.Roles[role])
     {
       key << e->Layer->GetBlendMode()
-          << (!e->Function.empty() ? e->Function.substr(13, 2) : (e->Wraps ? "w" : "g"))
+          << (!e->Function.empty() ? e->Function.substr(13, 2) : "g") << (e->Wraps ? "w" : "")
           << (e->Layer->GetProjectionQualityWeight() ? "q" : "")
           << (e->Streamed ? "s" : "")
           << (e->Streamed && e->Layer->GetInterpolation() == vtkGlobeLayer::Nearest ? "n" : "")
@@ -789,6 +791,12 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
          "}\n";
   }
   s << ""
+       // u of a projected layer that wraps, into [0, 1); outside the projection's domain
+       // (-1, -1) stays outside.
+       "vec2 globe_wrapU(vec2 uv)\n"
+       "{\n"
+       "  return uv.y < -0.5 ? uv : vec2(uv.x - floor(uv.x), uv.y);\n"
+       "}\n"
        "float globe_coverage(vec2 uv, vec4 border)\n"
        "{\n"
        "  if (uv.x < 0.0 || uv.x > 1.0 || uv.y < 0.0 || uv.y > 1.0) return 0.0;\n"

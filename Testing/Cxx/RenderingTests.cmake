@@ -41,6 +41,9 @@ list(APPEND globe_rendering_tests
 # Geodetic precision (issue 5): 0.5 m data at +-180 degrees and +-80 degrees as at (0, 0).
 list(APPEND globe_rendering_tests
   TestGlobeGeodeticPrecision.cxx)
+# Geodetic correctness (issue 18): projected layers at the poles and the antimeridian.
+list(APPEND globe_rendering_tests
+  TestGlobeGeodeticEdges.cxx)
 # Reliability (issue 16): extreme heights, layers removed while loading, failures reported
 # once, cameras that see nothing reported once.
 list(APPEND globe_rendering_tests

@@ -216,6 +216,24 @@ int TestGlobeMapProjection(int, char*[])
   Expect(p->IsInValidDomain(179.0, 85.0) && !p->IsInValidDomain(0.0, 85.1),
     "EPSG:3857: up to 85.0511");
 
+  std::printf("Rasters that wrap east-west:\n");
+  const double turn = 2.0 * 3.14159265358979323846 * 6378137.0;
+  Expect(vtkGlobeMapProjection::SpansAllLongitudes(3857, turn / 256, 256) &&
+      vtkGlobeMapProjection::SpansAllLongitudes(4087, turn / 1000, 1000) &&
+      vtkGlobeMapProjection::SpansAllLongitudes(3395, turn / 100, 100),
+    "EPSG:3857, 4087 and 3395 rasters one whole turn wide wrap");
+  Expect(vtkGlobeMapProjection::SpansAllLongitudes(3857, turn / 256 * (1 - 0.4 / 256), 256) &&
+      !vtkGlobeMapProjection::SpansAllLongitudes(3857, turn / 256 * (1 - 0.6 / 256), 256),
+    "EPSG:3857: a raster 0.4 pixel short of a turn wraps, 0.6 pixel short does not");
+  Expect(!vtkGlobeMapProjection::SpansAllLongitudes(3413, 1e5, 1000) &&
+      !vtkGlobeMapProjection::SpansAllLongitudes(32633, 1e5, 1000) && !observer->GetError(),
+    "polar stereographic and UTM rasters never wrap");
+  Expect(!vtkGlobeMapProjection::SpansAllLongitudes(12345, 1.0, 1000) && !observer->GetError(),
+    "an unknown EPSG code does not wrap (and says nothing)");
+  p->SetToEquirectangular(0.0, 60.0);
+  Expect(p->SpansAllLongitudes(turn / 2 / 512, 512) && !p->SpansAllLongitudes(turn / 2 / 512, 500),
+    "equirectangular with a 60 degree standard parallel: a turn is half the equator");
+
   std::printf("Bad input:\n");
   p->SetFromEPSG(3413);
   Expect(!p->SetFromEPSG(12345) && ErrorSaid(observer, "EPSG:12345") &&

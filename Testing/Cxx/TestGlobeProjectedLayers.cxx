@@ -36,61 +36,6 @@ namespace
 {
 vtkGlobeTest::Checklist Check;
 
-// An in-memory projected RGB raster: colour(i, j) for column i (east) and row j (north
-// first), its north-west outer corner and pixel size in metres, as a reader would give it.
-vtkSmartPointer<vtkGlobeLayer> ProjectedImage(int epsg, int w, int h, double west, double north,
-  double pixel, const std::function<std::array<unsigned char, 3>(int, int)>& colour)
-{
-  vtkNew<vtkImageData> image;
-  image->SetExtent(0, w - 1, 0, h - 1, 0, 0);
-  image->SetSpacing(pixel, pixel, 1.0);
-  image->SetOrigin(west + 0.5 * pixel, north - (h - 0.5) * pixel, 0.0);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  auto* scalars = vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars());
-  for (int j = 0; j < h; ++j)
-  {
-    for (int i = 0; i < w; ++i)
-    {
-      const auto c = colour(i, j);
-      const vtkIdType id = static_cast<vtkIdType>(h - 1 - j) * w + i; // VTK rows: south first
-      for (int k = 0; k < 3; ++k)
-      {
-        scalars->SetComponent(id, k, c[k]);
-      }
-    }
-  }
-  vtkNew<vtkIntArray> model, code;
-  model->SetName(vtkGlobeRasterReader::GetModelTypeArrayName());
-  model->InsertNextValue(vtkGlobeRasterReader::Projected);
-  code->SetName(vtkGlobeRasterReader::GetEPSGArrayName());
-  code->InsertNextValue(epsg);
-  vtkNew<vtkDoubleArray> transform;
-  transform->SetName(vtkGlobeRasterReader::GetGeoTransformArrayName());
-  for (double v : { west, north, pixel, pixel })
-  {
-    transform->InsertNextValue(v);
-  }
-  image->GetFieldData()->AddArray(model);
-  image->GetFieldData()->AddArray(code);
-  image->GetFieldData()->AddArray(transform);
-  auto layer = vtkSmartPointer<vtkGlobeLayer>::New();
-  layer->SetRoleToColor();
-  layer->SetInputData(image);
-  layer->SetFeatherWidth(0.0);
-  layer->SetInterpolationToNearest();
-  return layer;
-}
-
-// Distinct colours for neighbouring texels (a hash), so a misregistration by one texel shows.
-std::array<unsigned char, 3> TexelColour(int layer, int i, int j)
-{
-  unsigned int hsh = static_cast<unsigned int>(i) * 73856093u ^
-    static_cast<unsigned int>(j) * 19349663u ^ static_cast<unsigned int>(layer) * 83492791u;
-  hsh *= 2654435761u;
-  return { static_cast<unsigned char>(40 + (hsh >> 24) % 200),
-    static_cast<unsigned char>(40 + (hsh >> 16) % 200), static_cast<unsigned char>(40 + (hsh >> 8) % 200) };
-}
-
 void PartRainier()
 {
   std::printf("A. Rainier, geographic and UTM 10N:\n");
@@ -305,7 +250,7 @@ void PartSynthetic()
     {
       for (int i = 0; i < 180; ++i)
       {
-        const auto c = TexelColour(0, i, j);
+        const auto c = vtkGlobeTest::TexelColour(0, i, j);
         rgb.insert(rgb.end(), { c[0], c[1], c[2] });
       }
     }
@@ -314,11 +259,11 @@ void PartSynthetic()
     equirect->SetInterpolationToNearest();
   }
   // Polar stereographic north (EPSG:3413), 100 km texels over +-1,500 km.
-  auto polar = ProjectedImage(3413, 30, 30, -1.5e6, 1.5e6, 1.0e5,
-    [](int i, int j) { return TexelColour(1, i, j); });
+  auto polar = vtkGlobeTest::ProjectedImage(3413, 30, 30, -1.5e6, 1.5e6, 1.0e5,
+    [](int i, int j) { return vtkGlobeTest::TexelColour(1, i, j); });
   // UTM 33N, 25 km texels, 500 x 1,000 km from (250 km E, 5,500 km N).
-  auto utm = ProjectedImage(32633, 20, 40, 250000.0, 6.5e6, 25000.0,
-    [](int i, int j) { return TexelColour(2, i, j); });
+  auto utm = vtkGlobeTest::ProjectedImage(32633, 20, 40, 250000.0, 6.5e6, 25000.0,
+    [](int i, int j) { return vtkGlobeTest::TexelColour(2, i, j); });
   scene.Mapper->AddLayer(equirect);
   scene.Mapper->AddLayer(polar);
   scene.Mapper->AddLayer(utm);
@@ -367,7 +312,7 @@ void PartSynthetic()
       {
         continue;
       }
-      const auto c = TexelColour(top, ti, tj);
+      const auto c = vtkGlobeTest::TexelColour(top, ti, tj);
       ++checked;
       ++perLayer[top];
       bool same = true;
@@ -396,7 +341,7 @@ void PartQualityWeight()
     red.insert(red.end(), { 255, 0, 0 });
   }
   equirect->SetColorData(36, 18, 3, red.data(), -180, 180, -90, 90);
-  auto polar = ProjectedImage(3413, 8, 8, -4.0e6, 4.0e6, 1.0e6,
+  auto polar = vtkGlobeTest::ProjectedImage(3413, 8, 8, -4.0e6, 4.0e6, 1.0e6,
     [](int, int) { return std::array<unsigned char, 3>{ 0, 0, 255 }; });
   for (vtkGlobeLayer* l : { equirect.Get(), polar.Get() })
   {

@@ -325,17 +325,23 @@ float globe_isometricLatitudeDifference(float dSin, float sinLat, float cosLat, 
 }
 
 // Longitude and latitude differences from the reference point (hi - hi + lo - lo); the
-// longitude difference is wrapped into [-pi, pi] by taking it from the reference's 2 pi twin.
+// longitude difference is wrapped into [-pi, pi] by taking it from the reference's 2 pi twin
+// (lon_r - 2 pi for lon_r >= 0, which serves differences below -pi; lon_r + 2 pi else). The
+// wrap is decided on hi + lo and only in the twin's direction: a hi part alone (on its
+// 2^-12 rad grid) rounds up to 1.2e-4 rad past pi, and a point just inside the antimeridian
+// took the wrong twin, 2 pi away.
 void globe_projectionDelta(float lonHi, float lonLo, float latHi, float latLo, vec4 p0, vec4 p1,
   GLOBE_OUT(float) dLon, GLOBE_OUT(float) dLat)
 {
-  float d = lonHi - p0.x;
-  dLon = abs(d) > GLOBE_PROJ_PI_HI ? (lonHi - p0.z) + (lonLo - p0.w) : d + (lonLo - p0.y);
+  float d = (lonHi - p0.x) + (lonLo - p0.y);
+  bool twin = p0.z > p0.x ? d > GLOBE_PROJ_PI_HI : d < -GLOBE_PROJ_PI_HI;
+  dLon = twin ? (lonHi - p0.z) + (lonLo - p0.w) : d;
   dLat = (latHi - p1.x) + (latLo - p1.y);
 }
 
 // The projection's domain (p4): longitude within a half width of the central meridian and a
-// latitude band. Rough float checks: only the texture coordinates need to be precise.
+// latitude band. Rough float checks: only the texture coordinates need to be precise. Callers
+// pass hi + lo: a hi part alone rounds up to 1.2e-4 rad past the pole or the antimeridian.
 bool globe_projectionInDomain(float lon, float lat, vec4 p4)
 {
   float d = lon - p4.x;
@@ -352,7 +358,7 @@ vec2 globe_projectionTexture(float x, float y, vec4 p2, vec4 p3)
 vec2 globe_projectEquirectangular(float lonHi, float lonLo, float latHi, float latLo, vec4 p0,
   vec4 p1, vec4 p2, vec4 p3, vec4 p4, vec4 p5, vec4 p6)
 {
-  if (!globe_projectionInDomain(lonHi, latHi, p4))
+  if (!globe_projectionInDomain(lonHi + lonLo, latHi + latLo, p4))
   {
     return vec2(-1.0f, -1.0f);
   }
@@ -369,7 +375,7 @@ bool globe_conformalStart(float lonHi, float lonLo, float latHi, float latLo, fl
   vec4 p0, vec4 p1, vec4 p4, GLOBE_OUT(float) dLon, GLOBE_OUT(float) dLat,
   GLOBE_OUT(float) sinLat, GLOBE_OUT(float) cosLat, GLOBE_OUT(float) dSin)
 {
-  if (!globe_projectionInDomain(lonHi, latHi, p4))
+  if (!globe_projectionInDomain(lonHi + lonLo, latHi + latLo, p4))
   {
     return false;
   }
