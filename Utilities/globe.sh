@@ -26,11 +26,13 @@ command="${1:-}"
 shift || true
 
 # Debian packages: compiler and CMake, VTK 9.1 with Python, GLM, GeographicLib, OpenImageIO,
-# libgeotiff with PROJ's database, and Xvfb + Mesa (llvmpipe) for rendering without a display.
+# libgeotiff with PROJ (its database, the EGM96 geoid grid), and Xvfb + Mesa (llvmpipe) for
+# rendering without a display.
 packages=(
   cmake g++ make pkg-config
   libvtk9-dev python3-vtk9
-  libglm-dev libgeographiclib-dev libopenimageio-dev libgeotiff-dev libtiff-dev proj-data
+  libglm-dev libgeographiclib-dev libopenimageio-dev libgeotiff-dev libtiff-dev
+  libproj-dev proj-data
   xvfb xauth x11-utils libgl1-mesa-dri libglx-mesa0 mesa-utils
 )
 

@@ -1,4 +1,5 @@
 #include "vtkGlobeLayer.h"
+#include "vtkGlobeGeoid.h"
 #include "vtkGlobeMapProjection.h"
 
 #include "vtkAlgorithmOutput.h"
@@ -21,6 +22,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
+#include "vtkWeakPointer.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -30,6 +32,7 @@
 #include <cstring>
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <mutex>
 #include <new>
 #include <string>
@@ -396,6 +399,7 @@ vtkStandardNewMacro(vtkGlobeLayerInput);
 class vtkGlobeLayer::vtkInternals
 {
 public:
+  vtkSmartPointer<vtkGlobeGeoid> Geoid; // GeoidFileName's, shared through SharedGeoid
   enum Sources
   {
     None,
@@ -505,6 +509,57 @@ vtkGlobeLayer::~vtkGlobeLayer()
 {
   this->SetFileName(nullptr);
   this->SetName(nullptr);
+  this->SetGeoidFileName(nullptr);
+}
+
+//------------------------------------------------------------------------------------------
+namespace
+{
+// One geoid object per file name while any layer holds it: a 15' grid is 4 MB, and the
+// layer set uploads one texture per geoid object.
+vtkSmartPointer<vtkGlobeGeoid> SharedGeoid(const std::string& fileName)
+{
+  static std::map<std::string, vtkWeakPointer<vtkGlobeGeoid>> geoids;
+  static std::mutex mutex;
+  std::lock_guard<std::mutex> lock(mutex);
+  vtkSmartPointer<vtkGlobeGeoid> geoid = geoids[fileName].Get();
+  if (!geoid)
+  {
+    geoid = vtkSmartPointer<vtkGlobeGeoid>::New();
+    geoid->SetFileName(fileName.c_str());
+    geoids[fileName] = geoid;
+  }
+  return geoid;
+}
+} // namespace
+
+void vtkGlobeLayer::SetVerticalDatumToEGM96()
+{
+  this->SetVerticalDatum(Geoid);
+  this->SetGeoidFileName(vtkGlobeGeoid::GetEGM96FileName());
+}
+
+vtkGlobeGeoid* vtkGlobeLayer::GetGeoid()
+{
+  vtkInternals& in = *this->Internals;
+  if (this->VerticalDatum != Geoid)
+  {
+    in.Geoid = nullptr;
+    return nullptr;
+  }
+  const std::string name = this->GeoidFileName ? this->GeoidFileName : "";
+  if (!in.Geoid || name != (in.Geoid->GetFileName() ? in.Geoid->GetFileName() : ""))
+  {
+    in.Geoid = SharedGeoid(name);
+  }
+  in.Geoid->Update();
+  return in.Geoid;
+}
+
+double vtkGlobeLayer::GetGeoidUndulation(double lon, double lat)
+{
+  vtkGlobeGeoid* geoid = this->GetGeoid();
+  return geoid ? geoid->GetUndulation(lon, lat) : 0.0;
 }
 
 //------------------------------------------------------------------------------------------
@@ -1589,6 +1644,9 @@ void vtkGlobeLayer::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "NumberOfVoids: " << this->NumberOfVoids << "\n";
   static const char* const streaming[] = { "Off", "On", "Auto" };
+  os << indent << "VerticalDatum: "
+     << (this->VerticalDatum == Geoid ? "Geoid " : "Ellipsoidal")
+     << (this->VerticalDatum == Geoid && this->GeoidFileName ? this->GeoidFileName : "") << "\n";
   os << indent << "Streaming: " << streaming[this->Streaming] << " (threshold "
      << this->StreamingThreshold << "; " << (this->IsStreamed() ? "streamed" : "whole") << ")\n";
   if (this->Role == Height)

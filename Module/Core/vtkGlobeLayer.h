@@ -61,6 +61,7 @@ class vtkAlgorithm;
 class vtkAlgorithmOutput;
 class vtkDataArray;
 class vtkDataObject;
+class vtkGlobeGeoid;
 class vtkGlobePageSource;
 class vtkGlobeRasterReader;
 class vtkImageData;
@@ -184,6 +185,36 @@ public:
   vtkGetMacro(Interpolation, int);
   void SetInterpolationToNearest() { this->SetInterpolation(Nearest); }
   void SetInterpolationToLinear() { this->SetInterpolation(Linear); }
+  ///@}
+
+  enum VerticalDatums
+  {
+    Ellipsoidal = 0, ///< heights above the ellipsoid (the default)
+    Geoid = 1        ///< heights above a geoid (orthometric): GeoidFileName's N is added
+  };
+
+  ///@{
+  /**
+   * The vertical datum of a height layer's values (Documentation/geodesy.md "Vertical
+   * datums"). Ellipsoidal heights are drawn as they are; heights above a geoid (SRTM and most
+   * DEMs are above EGM96) get the geoid's undulation N added per pixel on the GPU, h = H + N,
+   * bilinear between the geoid grid's nodes as PROJ does. SetVerticalDatumToEGM96 uses
+   * Debian proj-data's egm96_15.gtx (vtkGlobeGeoid::GetEGM96FileName). A geoid that cannot be
+   * read skips the layer with an error naming the file. Changing the datum changes the
+   * generated shaders; it does not re-read the layer.
+   */
+  vtkSetClampMacro(VerticalDatum, int, Ellipsoidal, Geoid);
+  vtkGetMacro(VerticalDatum, int);
+  void SetVerticalDatumToEllipsoidal() { this->SetVerticalDatum(Ellipsoidal); }
+  void SetVerticalDatumToEGM96();
+  vtkSetStringMacro(GeoidFileName);
+  vtkGetStringMacro(GeoidFileName);
+  /// The geoid of a layer whose VerticalDatum is Geoid (read once per file and shared by the
+  /// layers that name it); nullptr for ellipsoidal heights.
+  vtkGlobeGeoid* GetGeoid();
+  /// N at (lon, lat) in degrees for a geoid datum (NaN where the geoid has none), 0 for
+  /// ellipsoidal heights: ellipsoidal height = the layer's value + this.
+  double GetGeoidUndulation(double lon, double lat);
   ///@}
 
   ///@{
@@ -418,6 +449,8 @@ protected:
 
   // Settings.
   int Role = Height;
+  int VerticalDatum = Ellipsoidal;
+  char* GeoidFileName = nullptr;
   char* FileName = nullptr;
   char* Name = nullptr;
   double ValueScale = 1.0;

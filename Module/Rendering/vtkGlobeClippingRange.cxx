@@ -5,6 +5,7 @@
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
 #include "vtkGlobeEllipsoid.h"
+#include "vtkGlobeGeoid.h"
 #include "vtkGlobeLayer.h"
 #include "vtkGlobeLayerSet.h"
 #include "vtkGlobeMapper.h"
@@ -111,6 +112,16 @@ LocalTerrain ComputeLocalTerrain(vtkGlobeMapper* mapper, double lon, double lat,
   };
   for (vtkGlobeLayer* layer : order)
   {
+    // Heights above a geoid: N at the point, and at most its steepest slope further over the
+    // window (the geoid is smooth: EGM96's slopes stay below 1e-3).
+    double geoidTop = 0.0, geoidAt = 0.0, geoidSlope = 0.0;
+    if (vtkGlobeGeoid* geoid = layer->GetGeoid())
+    {
+      geoidAt = geoid->GetUndulation(lon, lat);
+      geoidSlope = geoid->GetMaximumSlope();
+      geoidTop = std::isfinite(geoidAt) ? geoidAt + geoidSlope * radius : geoid->GetRange()[1];
+      geoidAt = std::isfinite(geoidAt) ? geoidAt : 0.0;
+    }
     double e[4];
     layer->GetGeographicExtent(e);
     vtkDataArray* data = layer->GetData();
@@ -118,7 +129,9 @@ LocalTerrain ComputeLocalTerrain(vtkGlobeMapper* mapper, double lon, double lat,
     if (layer->GetModelType() != vtkGlobeLayer::Geographic || !data || w <= 0 || h <= 0 ||
       !std::isfinite(e[0]) || !std::isfinite(e[3]))
     {
-      compose(layer, false, layer->GetMaximumValue(), false, 0.0, 0.0);
+      const double top = layer->GetMaximumValue() +
+        (layer->GetGeoid() ? layer->GetGeoid()->GetRange()[1] : 0.0);
+      compose(layer, false, top, false, 0.0, 0.0);
       continue;
     }
     const double cosLat = std::max(std::cos(vtkMath::RadiansFromDegrees(lat)), 1e-3);
@@ -148,7 +161,7 @@ LocalTerrain ComputeLocalTerrain(vtkGlobeMapper* mapper, double lon, double lat,
     // More than 64 texels each way: the layer's maximum is a good enough bound.
     if (dLon > 64.0 * texelX || dLat > 64.0 * texelY)
     {
-      compose(layer, replaces, layer->GetMaximumValue(), false, 0.0, 0.0);
+      compose(layer, replaces, layer->GetMaximumValue() + geoidTop, false, 0.0, 0.0);
       continue;
     }
     auto at = [&](int i, int j) {
@@ -185,7 +198,8 @@ LocalTerrain ComputeLocalTerrain(vtkGlobeMapper* mapper, double lon, double lat,
         fy * ((1 - fx) * at(i, j + 1) + fx * at(i + 1, j + 1));
     }
     // Both axes' differences of a cell can combine: sqrt(2) covers the diagonal.
-    compose(layer, replaces, top, replaces, nadir, std::sqrt(2.0) * slope);
+    compose(layer, replaces, top + geoidTop, replaces, nadir + geoidAt,
+      std::sqrt(2.0) * slope + geoidSlope);
   }
   return result;
 }

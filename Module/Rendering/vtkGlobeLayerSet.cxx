@@ -1,6 +1,8 @@
 #include "vtkGlobeLayerSet.h"
 
 #include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkGlobeGeoid.h"
 #include "vtkGlobeLayer.h"
 #include "vtkGlobeMapProjection.h"
 #include "vtkGlobePageCache.h"
@@ -55,6 +57,17 @@ struct Entry
   bool Streamed = false;
   bool Prepared = false;
   double Border[4] = { 0, 0, 0, 0 }; // feather u, v (texture coordinates); 1/log(n); unused
+  // Heights above a geoid: the index of its texture in vtkInternals::Geoids, else -1.
+  int Geoid = -1;
+};
+
+// A geoid grid on the GPU (vtkGlobeLayer::VerticalDatum Geoid): its nodes as an R32F texture
+// read with texelFetch, interpolated in the shader (hardware filtering weights have 8 bits).
+struct GeoidTexture
+{
+  vtkSmartPointer<vtkGlobeGeoid> Geoid;
+  vtkSmartPointer<vtkTextureObject> Texture;
+  vtkMTimeType UploadedTime = 0;
 };
 
 const char* RoleFunction(int role)
@@ -90,6 +103,8 @@ public:
   vtkNew<vtkGlobePageCache> Pages;
   // Active layers by role, in composition order; Index[] is the uniform index of each.
   std::array<std::vector<Entry*>, NumberOfRoles> Roles;
+  // Geoids of height layers, kept with their textures; Entry::Geoid indexes this.
+  std::vector<GeoidTexture> Geoids;
   int NextAdded = 0;
   double MinimumHeight = 0.0;
   double MaximumHeight = 0.0;
@@ -259,6 +274,29 @@ int vtkGlobeLayerSet::Update()
       }
       continue;
     }
+    e.Geoid = -1;
+    if (vtkGlobeGeoid* geoid = layer->GetRole() == vtkGlobeLayer::Height ? layer->GetGeoid() : nullptr)
+    {
+      if (!geoid->IsValid())
+      {
+        if (!e.Reported)
+        {
+          vtkErrorMacro(<< "Layer " << name << " is skipped: its geoid "
+                        << (geoid->GetFileName() && *geoid->GetFileName() ? geoid->GetFileName() : "(no file)")
+                        << " cannot be read, so its heights cannot be made ellipsoidal");
+          e.Reported = true;
+        }
+        continue;
+      }
+      auto found = std::find_if(in.Geoids.begin(), in.Geoids.end(),
+        [geoid](const GeoidTexture& g) { return g.Geoid == geoid; });
+      if (found == in.Geoids.end())
+      {
+        in.Geoids.push_back(GeoidTexture{ geoid, nullptr, 0 });
+        found = in.Geoids.end() - 1;
+      }
+      e.Geoid = static_cast<int>(found - in.Geoids.begin());
+    }
     e.Reported = false;
     e.Active = true;
     const double feather = layer->GetFeatherWidth();
@@ -316,11 +354,18 @@ void vtkGlobeLayerSet::ComputeHeightRange()
     vtkGlobeLayer* layer = e->Layer;
     const double range[2] = { layer->GetMinimumValue(), layer->GetMaximumValue() };
     const double* valid = layer->GetValidRange();
-    const double lo = std::max(range[0], valid[0]);
-    const double hi = std::min(range[1], valid[1]);
+    double lo = std::max(range[0], valid[0]);
+    double hi = std::min(range[1], valid[1]);
     if (lo > hi)
     {
       continue; // nothing of it is valid
+    }
+    if (e->Geoid >= 0)
+    {
+      // Heights above a geoid: N, within the grid's range, is added to each value.
+      const double* n = in.Geoids[e->Geoid].Geoid->GetRange();
+      lo += n[0];
+      hi += n[1];
     }
     if (layer->GetBlendMode() == vtkGlobeLayer::Add)
     {
@@ -485,6 +530,31 @@ void vtkGlobeLayerSet::UploadTextures(vtkOpenGLRenderWindow* window, bool waitFo
     e.UploadedTime = data->GetMTime();
     ++this->NumberOfUploads;
   }
+  // Geoids of the active height layers: the node grid as it is (texelFetch only).
+  for (const Entry* e : this->Internals->Roles[vtkGlobeLayer::Height])
+  {
+    if (e->Geoid < 0)
+    {
+      continue;
+    }
+    GeoidTexture& g = this->Internals->Geoids[e->Geoid];
+    vtkFloatArray* values = g.Geoid->GetValues();
+    if (!values || (g.Texture && g.Texture->GetContext() == window && g.UploadedTime >= values->GetMTime()))
+    {
+      continue;
+    }
+    if (!g.Texture)
+    {
+      g.Texture = vtkSmartPointer<vtkTextureObject>::New();
+    }
+    g.Texture->SetContext(window);
+    g.Texture->SetMinificationFilter(vtkTextureObject::Nearest);
+    g.Texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    g.Texture->Create2DFromRaw(g.Geoid->GetNumberOfColumns(), g.Geoid->GetNumberOfRows(), 1,
+      VTK_FLOAT, values->GetVoidPointer(0));
+    g.UploadedTime = values->GetMTime();
+    ++this->NumberOfUploads;
+  }
   // Streamed layers: the pages the last frames asked for, and the coarsest of new layers.
   this->Internals->Pages->BeginFrame(window, waitForPages);
   for (auto& list : this->Internals->Roles)
@@ -512,6 +582,13 @@ size_t vtkGlobeLayerSet::GetTextureMemory()
         e.Texture->GetComponents() * (e.Layer->GetRole() == vtkGlobeLayer::Height ? 4 : 1) * 4 / 3;
     }
   }
+  for (const GeoidTexture& g : this->Internals->Geoids)
+  {
+    if (g.Texture && g.Texture->GetHandle())
+    {
+      bytes += static_cast<size_t>(g.Texture->GetWidth()) * g.Texture->GetHeight() * 4;
+    }
+  }
   return bytes;
 }
 
@@ -521,6 +598,20 @@ namespace
 bool Included(int role, int roles)
 {
   return (roles >> role) & 1;
+}
+
+// The geoids the active height layers use (indices into vtkInternals::Geoids), each once.
+std::vector<int> UsedGeoids(const std::vector<Entry*>& heights)
+{
+  std::vector<int> used;
+  for (const Entry* e : heights)
+  {
+    if (e->Geoid >= 0 && std::find(used.begin(), used.end(), e->Geoid) == used.end())
+    {
+      used.push_back(e->Geoid);
+    }
+  }
+  return used;
 }
 
 // The uniform name prefix of the i-th layer of a role ("globeHeight0", "globeColor2", ...).
@@ -715,6 +806,9 @@ std::string vtkGlobeLayerSet::GetShaderKey(int roles)
       key << e->Layer->GetBlendMode()
           << (!e->Function.empty() ? e->Function.substr(13, 2) : "g") << (e->Wraps ? "w" : "")
           << (e->Layer->GetProjectionQualityWeight() ? "q" : "")
+          << (e->Geoid >= 0 ? "G" + std::to_string(e->Geoid) +
+                  (in.Geoids[e->Geoid].Geoid->IsGlobal() ? "w" : "")
+                            : std::string())
           << (e->Streamed ? "s" : "")
           << (e->Streamed && e->Layer->GetInterpolation() == vtkGlobeLayer::Nearest ? "n" : "")
           << ",";
@@ -826,6 +920,36 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
        "  if (wraps) { dx.x -= floor(dx.x + 0.5); dy.x -= floor(dy.x + 0.5); }\n"
        "}\n";
 
+  // Geoids of height layers (vertical datum Geoid): N and its gradient per radian, bilinear
+  // between the nodes as vtkGlobeGeoid::GetUndulation (and PROJ) interpolate; w = 0 outside a
+  // regional grid or next to a node without value.
+  const std::vector<int> geoids = Included(vtkGlobeLayer::Height, roles) ? UsedGeoids(in.Roles[vtkGlobeLayer::Height]) : std::vector<int>();
+  if (!geoids.empty())
+  {
+    s << "vec4 globe_geoid(sampler2D g, vec4 grid, bool wraps, float lon, float lat)\n"
+         "{\n"
+         "  ivec2 size = textureSize(g, 0);\n"
+         "  float x = (lon - grid.x) / grid.z;\n"
+         "  float y = (lat - grid.y) / grid.w;\n"
+         "  if (wraps) x -= floor(x / float(size.x)) * float(size.x);\n"
+         "  else if (x < 0.0 || x > float(size.x - 1)) return vec4(0.0);\n"
+         "  if (y < -1e-3 || y > float(size.y - 1) + 1e-3) return vec4(0.0);\n"
+         "  ivec2 i0 = ivec2(min(floor(x), float(size.x - 1)), clamp(floor(y), 0.0, float(size.y - 2)));\n"
+         "  vec2 f = vec2(x - float(i0.x), clamp(y - float(i0.y), 0.0, 1.0));\n"
+         "  int i1 = wraps ? (i0.x + 1) % size.x : min(i0.x + 1, size.x - 1);\n"
+         "  float a = texelFetch(g, i0, 0).r;\n"
+         "  float b = texelFetch(g, ivec2(i1, i0.y), 0).r;\n"
+         "  float c = texelFetch(g, ivec2(i0.x, i0.y + 1), 0).r;\n"
+         "  float d = texelFetch(g, ivec2(i1, i0.y + 1), 0).r;\n"
+         "  float n = mix(mix(a, b, f.x), mix(c, d, f.x), f.y);\n"
+         "  vec2 gradient = vec2(mix(b - a, d - c, f.y) / grid.z, mix(c - a, d - b, f.x) / grid.w);\n"
+         "  return isnan(n) || isnan(gradient.x) || isnan(gradient.y) ? vec4(0.0) : vec4(n, gradient, 1.0);\n"
+         "}\n";
+    for (int k : geoids)
+    {
+      s << "uniform sampler2D globeGeoid" << k << ";\nuniform vec4 globeGeoid" << k << "Grid;\n";
+    }
+  }
   for (int role = 0; role < NumberOfRoles; ++role)
   {
     const auto& list = in.Roles[role];
@@ -903,6 +1027,15 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
          "  float w;\n  float sumW = 0.0;\n  "
       << type << " sumV = " << zero << ";\n"
       << "  vec2 uv, uvE, uvN, dx, dy;\n";
+    if (height)
+    {
+      for (int k : geoids)
+      {
+        s << "  vec4 geoid" << k << " = globe_geoid(globeGeoid" << k << ", globeGeoid" << k
+          << "Grid, " << (in.Geoids[k].Geoid->IsGlobal() ? "true" : "false")
+          << ", lonHi + lonLo, lat);\n";
+      }
+    }
     // All texture coordinates and their derivatives first, in uniform control flow.
     for (size_t i = 0; i < list.size(); ++i)
     {
@@ -970,8 +1103,15 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
         }
         s
           << "    bool valid = !isnan(v) && !isnan(gi.x) && !isnan(gi.y) && v >= " << p
-          << "Style.z && v <= " << p << "Style.w;\n"
-          << "    if (!valid) w = 0.0;\n"
+          << "Style.z && v <= " << p << "Style.w;\n";
+        if (e->Geoid >= 0)
+        {
+          // Heights above the geoid: h = H + N (Documentation/geodesy.md "Vertical datums").
+          const std::string g = "geoid" + std::to_string(e->Geoid);
+          s << "    valid = valid && " << g << ".w > 0.0;\n"
+            << "    v += " << g << ".x;\n    gi += " << g << ".yz;\n";
+        }
+        s << "    if (!valid) w = 0.0;\n"
           << "    vec3 value = valid ? vec3(v, gi) : vec3(0.0);\n";
         EmitBlend(s, mode, target, "value");
       }
@@ -1270,6 +1410,23 @@ void vtkGlobeLayerSet::BindTextures(vtkShaderProgram* program, int roles)
       static_cast<float>(vtkGlobePageCache::Border) };
     program->SetUniform2f("globePageGeometry", geometry);
   }
+  if (Included(vtkGlobeLayer::Height, roles))
+  {
+    const double deg = vtkMath::Pi() / 180.0;
+    for (int k : UsedGeoids(in.Roles[vtkGlobeLayer::Height]))
+    {
+      const GeoidTexture& g = in.Geoids[k];
+      g.Texture->Activate();
+      const std::string name = "globeGeoid" + std::to_string(k);
+      program->SetUniformi(name.c_str(), g.Texture->GetTextureUnit());
+      const double* origin = g.Geoid->GetOrigin();
+      const double* spacing = g.Geoid->GetSpacing();
+      const float grid[4] = { static_cast<float>(origin[0] * deg),
+        static_cast<float>(origin[1] * deg), static_cast<float>(spacing[0] * deg),
+        static_cast<float>(spacing[1] * deg) };
+      program->SetUniform4f((name + "Grid").c_str(), grid);
+    }
+  }
   for (int role = 0; role < NumberOfRoles; ++role)
   {
     if (!Included(role, roles))
@@ -1338,6 +1495,13 @@ void vtkGlobeLayerSet::BindTextures(vtkShaderProgram* program, int roles)
 void vtkGlobeLayerSet::UnbindTextures(int roles)
 {
   const auto& in = *this->Internals;
+  if (Included(vtkGlobeLayer::Height, roles))
+  {
+    for (int k : UsedGeoids(in.Roles[vtkGlobeLayer::Height]))
+    {
+      in.Geoids[k].Texture->Deactivate();
+    }
+  }
   for (int role = 0; role < NumberOfRoles; ++role)
   {
     if (!Included(role, roles))
@@ -1370,6 +1534,15 @@ void vtkGlobeLayerSet::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Internals->ReleaseRetired(window);
   this->Internals->Pages->ReleaseGraphicsResources(window);
+  for (GeoidTexture& g : this->Internals->Geoids)
+  {
+    if (g.Texture)
+    {
+      g.Texture->ReleaseGraphicsResources(window);
+      g.Texture = nullptr;
+      g.UploadedTime = 0;
+    }
+  }
   for (auto& held : this->Internals->Entries)
   {
     Entry& e = *held;

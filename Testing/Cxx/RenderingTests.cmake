@@ -43,7 +43,8 @@ list(APPEND globe_rendering_tests
   TestGlobeGeodeticPrecision.cxx)
 # Geodetic correctness (issue 18): projected layers at the poles and the antimeridian.
 list(APPEND globe_rendering_tests
-  TestGlobeGeodeticEdges.cxx)
+  TestGlobeGeodeticEdges.cxx
+  TestGlobeVerticalDatum.cxx)
 # Reliability (issue 16): extreme heights, layers removed while loading, failures reported
 # once, cameras that see nothing reported once.
 list(APPEND globe_rendering_tests
@@ -61,7 +62,7 @@ add_executable(GlobeRenderingCxxTests ${_globe_rendering_driver_sources})
 target_link_libraries(GlobeRenderingCxxTests PRIVATE
   GlobeTestSupport VTKGlobe::Rendering VTK::RenderingCore VTK::RenderingOpenGL2
   VTK::TestingRendering VTK::FiltersSources VTK::IOImage VTK::InteractionStyle VTK::opengl
-  VTK::ImagingCore)
+  VTK::ImagingCore PROJ::proj)
 vtk_module_autoinit(TARGETS GlobeRenderingCxxTests
   MODULES VTK::RenderingOpenGL2 VTK::InteractionStyle)
 
