@@ -1,6 +1,7 @@
 // globe_ellipsoid.glsl: the ellipsoid functions the GPU runs.
 //
-// Written in the common subset of GLSL (>= 1.50) and C++ with GLM (DESIGN.md §9), so this very
+// Written in the common subset of GLSL (>= 1.50) and C++ with GLM (Documentation/geodesy.md,
+// "The shader-math library"), so this very
 // text is compiled into shaders by the Rendering module and, through vtkGlobeShaderMath.h,
 // into C++ unit tests in float (GPU semantics) and in double. Rules of the subset:
 //   - no swizzles beyond .x/.y/.z/.w; literals carry an f suffix (exact binary values only);

@@ -1,5 +1,6 @@
 // globe_pgm.glsl: spherical Projective Grid Mapping (Mahsman 2010, with the corrections of
-// DESIGN.md §5), in the GLSL/C++ common subset (see globe_ellipsoid.glsl for its rules).
+// Documentation/rendering.md, "PGM as implemented" and "Errata and degenerate cases"), in the
+// GLSL/C++ common subset (see globe_ellipsoid.glsl for its rules).
 //
 // Everything here lives in the body's scaled space (x/a, y/b, z/c), where the ellipsoid is the
 // unit sphere and the reference "spheres" have radii r near 1. Vectors are eye-relative; the
@@ -86,7 +87,8 @@ float globe_pgmGridPoint(vec3 ray, vec3 nadir, vec3 anyPerpendicular, float d, f
   float cosW = dot(ray, nadir);
   vec3 across = ray - nadir * cosW;
   float sinW = globe_length(across);
-  // A ray along the nadir has no plane of its own: any perpendicular will do (DESIGN.md §8).
+  // A ray along the nadir has no plane of its own: any perpendicular will do
+  // (Documentation/rendering.md, "Errata and degenerate cases").
   vec3 k = sinW > 0.0f ? across / sinW : anyPerpendicular;
   float t = 0.0f;
   vec2 g = vec2(1.0f, 0.0f);

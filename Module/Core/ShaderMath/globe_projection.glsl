@@ -2,7 +2,8 @@
 // (lon, lat) in radians -> a raster's normalized texture coordinates (u east, v south, [0, 1]
 // over the raster's outer pixel edges). Common GLSL/C++ subset (see globe_ellipsoid.glsl).
 //
-// Float-safe by construction (DESIGN.md §6, Mahsman's trick): vtkGlobeMapProjection::
+// Float-safe by construction (Mahsman's trick; Documentation/projections.md, "GLSL
+// parameterisation"): vtkGlobeMapProjection::
 // ComputeShaderParameters evaluates the projection in double at a reference point r inside
 // (or next to) the raster, and the GPU only computes the DIFFERENCE of the projection from
 // r with formulas that keep relative accuracy for small differences. No planet radius, false

@@ -1,5 +1,6 @@
 /**
- * vtkGlobeShaderMath.h: the C++ side of the GLSL/C++ common-subset shader math (DESIGN.md §9).
+ * vtkGlobeShaderMath.h: the C++ side of the GLSL/C++ common-subset shader math
+ * (Documentation/geodesy.md, "The shader-math library").
  *
  * Includes the very GLSL text the GPU runs (globe_ellipsoid.glsl, globe_pgm.glsl,
  * globe_projection.glsl) twice,
