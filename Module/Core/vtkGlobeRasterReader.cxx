@@ -20,6 +20,7 @@
 #include <geo_normalize.h>
 #include <geotiff.h>
 #include <geovalues.h>
+#include <proj.h>
 #include <tiffio.h>
 #include <xtiffio.h>
 
@@ -30,6 +31,7 @@
 #include <cstdarg>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -181,6 +183,111 @@ KeyState GetShortKey(GTIF* gtif, geokey_t key, unsigned short& value, std::strin
 KeyState GetDoubleKey(GTIF* gtif, geokey_t key, double& value, std::string& why)
 {
   return GetGeoKey(gtif, key, TYPE_DOUBLE, &value, why);
+}
+
+//------------------------------------------------------------------------------------------
+// CRSs given without an EPSG code (user-defined GeoKeys, a WKT or PROJ string): PROJ
+// identifies the equivalent EPSG CRS, so the rest of the project needs only the code.
+
+/// The EPSG code PROJ finds equivalent to a CRS definition (WKT or PROJ string), with PROJ's
+/// confidence (70: equivalent up to names, 90 or 100: also by name) and whether it is a
+/// projected CRS; 0 when none is at least 70 % or the definition is not a CRS.
+int IdentifyEPSG(
+  const std::string& definition, int& confidence, std::string& name, bool* projected = nullptr)
+{
+  confidence = 0;
+  int code = 0;
+  PJ_CONTEXT* context = proj_context_create();
+  if (!context)
+  {
+    return 0;
+  }
+  proj_log_level(context, PJ_LOG_NONE);
+  if (PJ* crs = proj_create(context, definition.c_str()))
+  {
+    int* confidences = nullptr;
+    if (PJ_OBJ_LIST* list = proj_identify(context, crs, "EPSG", nullptr, &confidences))
+    {
+      const int n = proj_list_get_count(list);
+      for (int i = 0; i < n && code == 0; ++i)
+      {
+        PJ* candidate = proj_list_get(context, list, i);
+        const char* id = candidate ? proj_get_id_code(candidate, 0) : nullptr;
+        if (id && confidences[i] >= 70)
+        {
+          code = std::atoi(id);
+          confidence = confidences[i];
+          const char* n = proj_get_name(candidate);
+          name = n ? n : "";
+          if (projected)
+          {
+            *projected = proj_get_type(candidate) == PJ_TYPE_PROJECTED_CRS;
+          }
+        }
+        proj_destroy(candidate);
+      }
+      proj_int_list_destroy(confidences);
+      proj_list_destroy(list);
+    }
+    proj_destroy(crs);
+  }
+  proj_context_destroy(context);
+  return code;
+}
+
+/// The user-defined projection of a GeoTIFF (ProjectedCSTypeGeoKey absent or user-defined) as
+/// libgeotiff normalises it, identified by PROJ. Every GeoKey libgeotiff's normalisation reads
+/// is first checked for its type (a corrupt key is refused before libgeotiff reads it).
+int IdentifyUserDefinedProjection(GTIF* gtif, int& confidence, std::string& name, std::string& why)
+{
+  confidence = 0;
+  // GeogGeodeticDatum .. GeogAzimuthUnits and ProjectedCSType .. ProjRectifiedGridAngle, by type.
+  const geokey_t shorts[] = { GeographicTypeGeoKey, GeogGeodeticDatumGeoKey,
+    GeogPrimeMeridianGeoKey, GeogLinearUnitsGeoKey, GeogAngularUnitsGeoKey, GeogEllipsoidGeoKey,
+    GeogAzimuthUnitsGeoKey, ProjectedCSTypeGeoKey, ProjectionGeoKey, ProjCoordTransGeoKey,
+    ProjLinearUnitsGeoKey };
+  unsigned short value = 0;
+  for (geokey_t key : shorts)
+  {
+    if (GetShortKey(gtif, key, value, why) == KeyState::Corrupt)
+    {
+      return -1;
+    }
+  }
+  double number = 0.0;
+  for (int key = GeogLinearUnitSizeGeoKey; key <= GeogPrimeMeridianLongGeoKey; ++key)
+  {
+    const geokey_t k = static_cast<geokey_t>(key);
+    if (k != GeogAngularUnitsGeoKey && k != GeogEllipsoidGeoKey && k != GeogAzimuthUnitsGeoKey &&
+      GetDoubleKey(gtif, k, number, why) == KeyState::Corrupt)
+    {
+      return -1;
+    }
+  }
+  for (int key = ProjLinearUnitSizeGeoKey; key <= ProjRectifiedGridAngleGeoKey; ++key)
+  {
+    if (GetDoubleKey(gtif, static_cast<geokey_t>(key), number, why) == KeyState::Corrupt)
+    {
+      return -1;
+    }
+  }
+  if (GetShortKey(gtif, ProjCoordTransGeoKey, value, why) != KeyState::Read &&
+    GetShortKey(gtif, ProjectionGeoKey, value, why) != KeyState::Read)
+  {
+    return 0; // no projection defined at all
+  }
+  int code = 0;
+  GTIFDefn* defn = GTIFAllocDefn();
+  if (defn && GTIFGetDefn(gtif, defn) && defn->Model == ModelTypeProjected)
+  {
+    if (char* proj4 = GTIFGetProj4Defn(defn))
+    {
+      code = IdentifyEPSG(std::string(proj4) + " +type=crs", confidence, name);
+      GTIFFreeMemory(proj4);
+    }
+  }
+  GTIFFreeDefn(defn);
+  return code;
 }
 
 //------------------------------------------------------------------------------------------
@@ -718,6 +825,22 @@ bool ReadGeoTIFF(const std::string& fileName, TIFFInfo& info, std::string& why)
   {
     geo.EPSG = code;
     geo.EPSGFrom = geographic ? "GeographicTypeGeoKey" : "ProjectedCSTypeGeoKey";
+  }
+  else if (!geographic)
+  {
+    int confidence = 0;
+    std::string name;
+    const int identified = IdentifyUserDefinedProjection(gtif, confidence, name, why);
+    if (identified < 0)
+    {
+      return false;
+    }
+    if (identified > 0)
+    {
+      geo.EPSG = identified;
+      geo.EPSGFrom = "its user-defined projection GeoKeys, which PROJ identifies as EPSG:" +
+        std::to_string(identified) + " (" + name + ", " + std::to_string(confidence) + " %)";
+    }
   }
   // A projected CRS key in a geographic file contradicts its model type.
   if (geographic)
@@ -1310,17 +1433,54 @@ int vtkGlobeRasterReader::RequestInformation(
         geo.ModelType = WKTModelType(wkt.Keyword);
         if (geo.ModelType == 0)
         {
-          return this->Fail(vtkErrorCode::FileFormatError,
-            "its projection file '" + prj + "' is not a geographic or projected WKT CRS (" +
-              (wkt.Keyword.empty() ? std::string("no WKT keyword") : wkt.Keyword) + ")");
+          // Not WKT: a PROJ string ("+proj=merc ...") that PROJ identifies will do.
+          std::string definition = text;
+          while (!definition.empty() && std::isspace(static_cast<unsigned char>(definition.back())))
+          {
+            definition.pop_back();
+          }
+          if (definition.rfind('+', 0) == 0 && definition.find("+type=crs") == std::string::npos)
+          {
+            definition += " +type=crs";
+          }
+          int confidence = 0;
+          std::string name;
+          bool projected = false;
+          const int code = definition.rfind('+', 0) == 0
+            ? IdentifyEPSG(definition, confidence, name, &projected)
+            : 0;
+          if (code == 0)
+          {
+            return this->Fail(vtkErrorCode::FileFormatError,
+              "its projection file '" + prj + "' is not a geographic or projected WKT CRS (" +
+                (wkt.Keyword.empty() ? std::string("no WKT keyword") : wkt.Keyword) +
+                "), nor a PROJ string PROJ identifies with an EPSG CRS");
+          }
+          geo.ModelType = projected ? Projected : Geographic;
+          geo.EPSG = code;
+          geo.EPSGFrom = "its projection file '" + prj + "' (a PROJ string PROJ identifies as EPSG:" +
+            std::to_string(code) + ", " + name + ", " + std::to_string(confidence) + " %)";
         }
-        geo.EPSG = wkt.EPSG;
-        geo.EPSGFrom = "its projection file '" + prj + "'";
+        else
+        {
+          geo.EPSG = wkt.EPSG;
+          geo.EPSGFrom = "its projection file '" + prj + "'";
+        }
         if (geo.EPSG == 0 && this->EPSG == 0 && geo.ModelType == Projected)
         {
-          return this->Fail(vtkErrorCode::FileFormatError,
-            "its projection file '" + prj +
-              "' names no EPSG authority for its projected CRS; give the code with SetEPSG");
+          // A WKT without an authority (e.g. written from a PROJ string): PROJ may know it.
+          int confidence = 0;
+          std::string name;
+          geo.EPSG = IdentifyEPSG(text, confidence, name);
+          if (geo.EPSG == 0)
+          {
+            return this->Fail(vtkErrorCode::FileFormatError,
+              "its projection file '" + prj +
+                "' names no EPSG authority for its projected CRS, and PROJ finds no EPSG CRS "
+                "equivalent to it; give the code with SetEPSG");
+          }
+          geo.EPSGFrom += ", which PROJ identifies as EPSG:" + std::to_string(geo.EPSG) + " (" +
+            name + ", " + std::to_string(confidence) + " %)";
         }
         if (geo.ModelType == Geographic && wkt.UnitFactor > 0.0)
         {

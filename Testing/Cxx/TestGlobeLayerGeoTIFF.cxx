@@ -57,6 +57,9 @@ struct GeoTIFF
   std::vector<double> Scale = { 1, 1, 0 };
   std::vector<double> Matrix; // 16 values; replaces tie points + scale when set
   const char* NoData = nullptr;
+  // Further GeoKeys (a user-defined projection).
+  std::vector<std::pair<geokey_t, int>> ShortKeys;
+  std::vector<std::pair<geokey_t, double>> DoubleKeys;
 };
 
 bool Write(const std::string& path, const GeoTIFF& g)
@@ -117,6 +120,14 @@ bool Write(const std::string& path, const GeoTIFF& g)
   {
     GTIFKeySet(gtif, GeogSemiMajorAxisGeoKey, TYPE_DOUBLE, 1, g.SemiMajor);
     GTIFKeySet(gtif, GeogInvFlatteningGeoKey, TYPE_DOUBLE, 1, g.InverseFlattening);
+  }
+  for (const auto& k : g.ShortKeys)
+  {
+    GTIFKeySet(gtif, k.first, TYPE_SHORT, 1, k.second);
+  }
+  for (const auto& k : g.DoubleKeys)
+  {
+    GTIFKeySet(gtif, k.first, TYPE_DOUBLE, 1, k.second);
   }
   GTIFWriteKeys(gtif);
   GTIFFree(gtif);
@@ -273,6 +284,28 @@ int TestGlobeLayerGeoTIFF(int, char*[])
     ok = load("sphere.tif", m);
     Expect(ok && layer->GetDatumSemiMinorAxis() == 3396190.0,
       "inverse flattening 0 is a sphere: semi-minor = semi-major");
+
+    // EPSG:3031 spelled out in user-defined GeoKeys (as GDAL writes a PROJ string or a WKT
+    // without its code): PROJ identifies it, and the layer is EPSG:3031.
+    GeoTIFF u = Ramp();
+    u.ModelType = ModelTypeProjected;
+    u.EPSG = KvUserDefined;
+    u.TiePoints = { 0, 0, 0, -1.0e6, 1.0e6, 0 };
+    u.Scale = { 2.0e5, 2.0e5, 0 };
+    u.ShortKeys = { { GeographicTypeGeoKey, 4326 }, { ProjectionGeoKey, KvUserDefined },
+      { ProjCoordTransGeoKey, CT_PolarStereographic }, { ProjLinearUnitsGeoKey, Linear_Meter } };
+    u.DoubleKeys = { { ProjNatOriginLatGeoKey, -71.0 }, { ProjStraightVertPoleLongGeoKey, 0.0 },
+      { ProjFalseEastingGeoKey, 0.0 }, { ProjFalseNorthingGeoKey, 0.0 } };
+    ok = load("user_3031.tif", u);
+    Expect(ok && layer->GetModelType() == vtkGlobeLayer::Projected && layer->GetEPSG() == 3031,
+      "user-defined polar stereographic GeoKeys (71 S, 0 E, WGS 84): identified as EPSG:" +
+        std::to_string(layer->GetEPSG()));
+    // The same with a true-scale latitude no EPSG CRS has: not identified, EPSG 0.
+    u.DoubleKeys[0].second = -65.5;
+    ok = load("user_stere.tif", u);
+    Expect(ok && layer->GetEPSG() == 0,
+      "polar stereographic GeoKeys true at 65.5 S (no EPSG equivalent): EPSG " +
+        std::to_string(layer->GetEPSG()));
   }
 
   std::printf("Nodata and sample types:\n");

@@ -362,6 +362,43 @@ int TestGlobeRasterReader(int, char*[])
         FieldNumber(image, "GlobeGeoTransform", 1), FieldText(image, "GlobeUnits").c_str(),
         FieldText(image, "GlobeGeoreferenceSource").c_str()));
 
+    // The same PNG with EPSG:3031 as a WKT without any AUTHORITY (as a PROJ string converts):
+    // PROJ identifies it.
+    WriteText(Temp + "/reader_utm.pgw", "1000\n0\n0\n-1000\n-1500000\n1500000\n");
+    WriteText(Temp + "/reader_utm.prj",
+      "PROJCS[\"unknown\",GEOGCS[\"unknown\",DATUM[\"WGS_1984\",SPHEROID[\"WGS 84\",6378137,"
+      "298.257223563]],PRIMEM[\"Greenwich\",0],UNIT[\"degree\",0.0174532925199433]],"
+      "PROJECTION[\"Polar_Stereographic\"],PARAMETER[\"latitude_of_origin\",-71],"
+      "PARAMETER[\"central_meridian\",0],PARAMETER[\"false_easting\",0],"
+      "PARAMETER[\"false_northing\",0],UNIT[\"metre\",1]]");
+    {
+      vtkNew<vtkGlobeRasterReader> identified;
+      identified->SetFileName(png.c_str());
+      identified->Update();
+      vtkImageData* out = identified->GetOutput();
+      Expect(!*identified->GetLastError() && FieldNumber(out, "GlobeEPSG") == 3031 &&
+          FieldText(out, "GlobeGeoreferenceSource") == "world file + .prj",
+        Printf(".pgw + a .prj WKT without AUTHORITY for Antarctic polar stereographic: EPSG %g "
+               "(%s)",
+          FieldNumber(out, "GlobeEPSG"), identified->GetLastError()));
+    }
+    // Web Mercator as a PROJ string in the .prj (a common way to write it): identified too.
+    WriteText(Temp + "/reader_utm.pgw", "2504688.5425\n0\n0\n-2504688.5425\n-18785164.07\n8766409.9\n");
+    WriteText(Temp + "/reader_utm.prj",
+      "+proj=merc +a=6378137 +b=6378137 +lat_ts=0 +lon_0=0 +x_0=0 +y_0=0 +k=1 +units=m "
+      "+nadgrids=@null +wktext +no_defs\n");
+    {
+      vtkNew<vtkGlobeRasterReader> identified;
+      identified->SetFileName(png.c_str());
+      identified->Update();
+      vtkImageData* out = identified->GetOutput();
+      Expect(!*identified->GetLastError() && FieldNumber(out, "GlobeModelType") == 2 &&
+          FieldNumber(out, "GlobeEPSG") == 3857,
+        Printf(".pgw + a .prj holding a Web Mercator PROJ string: projected, EPSG %g",
+          FieldNumber(out, "GlobeEPSG")));
+    }
+    std::remove((Temp + "/reader_utm.prj").c_str());
+
     // A float TIFF + .tfw in degrees, no .prj: WGS 84 assumed.
     const std::string tif = Temp + "/reader_degrees.tif";
     Expect(WriteImage(tif, 16, 8, 1, OIIO::TypeDesc::FLOAT), "wrote a 16 x 8 float TIFF");
