@@ -80,10 +80,9 @@ def projection_of(layer, path=None):
     projection = vtkGlobeMapProjection()
     collect_errors(projection)  # its own message would not name the file
     if not projection.SetFromEPSG(epsg):
-        raise LoadError("%s: its map projection (EPSG:%d) is not one the globe draws (it draws "
-                        "equirectangular, polar stereographic, Mercator, Web Mercator and "
-                        "transverse Mercator / UTM); reproject it, e.g. gdalwarp -t_srs "
-                        "EPSG:4326 in.tif out.tif" % (path, epsg))
+        # Layers in other CRSs are reprojected on load (geographic then): not reached for them.
+        raise LoadError("%s: its map projection (EPSG:%d) is not one the globe draws"
+                        % (path, epsg))
     a, b = layer.GetDatumSemiMajorAxis(), layer.GetDatumSemiMinorAxis()
     if 0 < b <= a:
         projection.SetEllipsoid(a, (a - b) / a)  # the file's own datum
@@ -219,9 +218,11 @@ def main(argv=None):
         print("error: %s" % error, file=sys.stderr)
         return 1
     projected = layer.GetModelType() != vtkGlobeLayer.Geographic
+    reprojected = layer.GetReprojectedFromEPSG()
     print("%s: %dx%d %s raster%s, lon [%.6f, %.6f], lat [%.6f, %.6f]" % (
         args.geotiff, layer.GetWidth(), layer.GetHeight(), layer.GetRoleAsString().lower(),
-        " in EPSG:%d" % layer.GetEPSG() if projected else "", *extent))
+        " in EPSG:%d" % layer.GetEPSG() if projected else
+        (" reprojected from EPSG:%d" % reprojected if reprojected else ""), *extent))
     globe_scene.require_display()
     window, _, body, camera = build(layer, size, args.grid, args.data, args.interactive)
     print("body %s; camera at lon %.4f lat %.4f, %.0f m up" % (body.GetName(), *camera))

@@ -12,10 +12,12 @@
 #include "vtkGlobePageSource.h"
 #include "vtkGlobeRasterReader.h"
 #include "vtkGlobeRasterSamples.h"
+#include "vtkGlobeReprojection.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
+#include "vtkLogger.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -1478,6 +1480,46 @@ bool vtkGlobeLayer::Load(vtkImageData* image, int streamedRows)
   in.Origin[1] = t[1];
   in.PixelSize[0] = t[2];
   in.PixelSize[1] = t[3];
+  this->ReprojectedFromEPSG = 0;
+  if (this->ModelType == Projected && this->EPSG > 0 &&
+    !vtkGlobeMapProjection::IsSupportedEPSG(this->EPSG))
+  {
+    // A CRS the GPU does not project: resampled into a geographic grid, once per load.
+    if (streamed)
+    {
+      return fail("EPSG:" + std::to_string(this->EPSG) +
+        " is not a projection the globe draws directly, and a streamed layer cannot be "
+        "reprojected on load (set Streaming Off, or reproject the file)");
+    }
+    vtkGlobeReprojection::Grid grid;
+    vtkSmartPointer<vtkDataArray> reprojected;
+    std::string why;
+    const double origin2[2] = { t[0], t[1] }, pixel2[2] = { t[2], t[3] };
+    if (!vtkGlobeReprojection::ToGeographic(this->EPSG, origin2, pixel2, width, height, in.Data,
+          this->Interpolation == Nearest, budget * 1024.0 * 1024.0, reprojected, grid, why))
+    {
+      return fail("EPSG:" + std::to_string(this->EPSG) + " cannot be reprojected: " + why);
+    }
+    vtkLogF(INFO, "%s: EPSG:%d is reprojected on load into a %d x %d geographic grid of %.6g x %.6g "
+                  "degrees (from %d x %d texels)",
+      what.c_str(), this->EPSG, grid.Width, grid.Height, grid.DLon, grid.DLat, width, height);
+    in.Data = reprojected;
+    this->ReprojectedFromEPSG = this->EPSG;
+    this->ModelType = Geographic;
+    this->EPSG = 4326;
+    this->RasterWidth = grid.Width;
+    this->RasterHeight = grid.Height;
+    in.Origin[0] = grid.West;
+    in.Origin[1] = grid.North;
+    in.PixelSize[0] = grid.DLon;
+    in.PixelSize[1] = grid.DLat;
+    in.Extent[0] = grid.West;
+    in.Extent[1] = grid.West + grid.Width * grid.DLon;
+    in.Extent[2] = grid.North - grid.Height * grid.DLat;
+    in.Extent[3] = grid.North;
+    // PROJ shifted the source datum: the grid is WGS 84's, as other EPSG:4326 layers.
+    this->DatumSemiMajorAxis = this->DatumSemiMinorAxis = 0.0;
+  }
   if (in.Source == vtkInternals::Input && !this->FileName)
   {
     const std::string file = FieldString(fd, vtkGlobeRasterReader::GetFileNameArrayName());

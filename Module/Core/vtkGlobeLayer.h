@@ -433,6 +433,14 @@ public:
   ///@}
 
   /**
+   * The EPSG code of a projected raster whose CRS the GPU does not project (not one of
+   * vtkGlobeMapProjection's; any CRS PROJ knows), which the layer resampled on load into a
+   * geographic grid through PROJ (Documentation/projections.md "Any other CRS"); 0 when the
+   * layer is drawn in its own georeferencing. Streamed layers need a supported CRS.
+   */
+  vtkGetMacro(ReprojectedFromEPSG, int);
+
+  /**
    * A layer that spans all longitudes and so wraps east-west, without a seam or a feathered
    * border at the antimeridian: a Geographic layer 360 degrees wide, or a Projected one in a
    * cylindrical projection (equirectangular, Mercator, Web Mercator) within half a pixel of a
@@ -450,6 +458,7 @@ protected:
   // Settings.
   int Role = Height;
   int VerticalDatum = Ellipsoidal;
+  int ReprojectedFromEPSG = 0;
   char* GeoidFileName = nullptr;
   char* FileName = nullptr;
   char* Name = nullptr;

@@ -278,6 +278,12 @@ bool vtkGlobeMapProjection::SpansAllLongitudes(double pixelWidth, int width)
     pixelWidth * width >= turn - 0.5 * pixelWidth;
 }
 
+bool vtkGlobeMapProjection::IsSupportedEPSG(int code)
+{
+  vtkNew<vtkGlobeMapProjection> projection;
+  return projection->SetFromEPSGQuietly(code);
+}
+
 bool vtkGlobeMapProjection::SpansAllLongitudes(int code, double pixelWidth, int width)
 {
   vtkNew<vtkGlobeMapProjection> projection;

@@ -188,6 +188,10 @@ public:
   /// The same for a raster in EPSG:`code`; false for unsupported codes (without an error).
   static bool SpansAllLongitudes(int code, double pixelWidth, int width);
 
+  /// Whether SetFromEPSG knows `code` (the projections the GPU draws exactly; layers in other
+  /// CRSs are reprojected on load, vtkGlobeLayer::GetReprojectedFromEPSG).
+  static bool IsSupportedEPSG(int code);
+
 protected:
   vtkGlobeMapProjection();
   ~vtkGlobeMapProjection() override;

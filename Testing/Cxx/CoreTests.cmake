@@ -13,6 +13,7 @@ set(globe_core_tests
   TestGlobeRasterReader.cxx
   TestGlobeRasterReaderHardening.cxx
   TestGlobeLayerInput.cxx
+  TestGlobeLayerReprojection.cxx
   TestGlobeMapProjection.cxx
   TestGlobeMapProjectionShader.cxx
   TestGlobePageSource.cxx)

@@ -1,6 +1,7 @@
-// Bad input to the globe mapper: no layers; missing, corrupt, non-georeferenced rasters, a
-// projection the renderer does not support (EPSG:2154), contradictory georeferencing, an extent
-// outside its projection's domain, and a raster of NaN among good ones (one of them projected); a camera at the centre of the body, inside
+// Bad input to the globe mapper: no layers; missing, corrupt, non-georeferenced rasters,
+// contradictory georeferencing, an extent outside its projection's domain, and a raster of NaN
+// among good ones (one of them UTM, one in EPSG:2154, which is reprojected on load); a camera
+// at the centre of the body, inside
 // it, and at NaN; a viewport without area. Each case: a clear error where it is one, no GL
 // error, no NaN in the depth buffer, no crash, and the rest of the scene still renders.
 #include "vtkConeSource.h"
@@ -141,6 +142,7 @@ int TestGlobeRenderBadInput(int, char*[])
       std::vector<const char*> Words;
     };
     std::vector<Bad> bad;
+    vtkSmartPointer<vtkGlobeLayer> reprojected;
     auto addBad = [&](vtkSmartPointer<vtkGlobeLayer> layer, const char* what,
                     std::vector<const char*> words) {
       addLayer(layer);
@@ -151,7 +153,9 @@ int TestGlobeRenderBadInput(int, char*[])
       lambert->SetRoleToColor();
       lambert->SetFileName(
         WritePNG("lambert93", 700000, 6600000, 1000, 2154, "RGF93 / Lambert-93").c_str());
-      addBad(lambert, "an unsupported projection", { "lambert93.png", "EPSG:2154", "not supported" });
+      // Not bad any more: a CRS the GPU does not project is reprojected on load.
+      addLayer(lambert);
+      reprojected = lambert;
       auto outside = vtkSmartPointer<vtkGlobeLayer>::New();
       outside->SetRoleToColor();
       outside->SetFileName(
@@ -200,8 +204,10 @@ int TestGlobeRenderBadInput(int, char*[])
         std::string(b.What) + ": reported with the file and the reason" + (named ? ": " + said : ""));
     }
     Expect(scene.Mapper->GetLayerSet()->GetNumberOfActiveHeightLayers() == 2 &&
-        scene.Mapper->GetLayerSet()->GetNumberOfActiveColorLayers() == 1,
-      "the good layers stay active (2 height, one of them UTM; 1 colour)");
+        scene.Mapper->GetLayerSet()->GetNumberOfActiveColorLayers() == 2 &&
+        reprojected->GetReprojectedFromEPSG() == 2154,
+      "the good layers stay active (2 height, one of them UTM; 2 colour, one of them EPSG:2154 "
+      "reprojected on load)");
     Expect(vtkGlobeTest::CoveredPixels(depth) > 5000 && NoNaN(depth) && NoGLError(),
       "the globe still renders");
   }
