@@ -391,6 +391,26 @@ bool vtkGlobeEllipsoid::GeodeticToCartesian(double lon, double lat, double heigh
   return this->GeodeticToCartesian(llh, xyz);
 }
 
+double* vtkGlobeEllipsoid::GeodeticToCartesian(double lon, double lat, double height)
+{
+  const double llh[3] = { lon, lat, height };
+  if (!this->GeodeticToCartesian(llh, this->Result))
+  {
+    std::fill(this->Result, this->Result + 3, std::numeric_limits<double>::quiet_NaN());
+  }
+  return this->Result;
+}
+
+double* vtkGlobeEllipsoid::CartesianToGeodetic(double x, double y, double z)
+{
+  const double xyz[3] = { x, y, z };
+  if (!this->CartesianToGeodetic(xyz, this->Result))
+  {
+    std::fill(this->Result, this->Result + 3, std::numeric_limits<double>::quiet_NaN());
+  }
+  return this->Result;
+}
+
 bool vtkGlobeEllipsoid::CartesianToGeodetic(const double xyz[3], double llh[3])
 {
   if (!this->CartesianToGeodeticQuiet(xyz, llh))

@@ -24,6 +24,7 @@
 
 #include "vtkGlobeCoreModule.h" // for export macro
 #include "vtkObject.h"
+#include "vtkWrappingHints.h" // for VTK_SIZEHINT
 
 #include <memory> // for std::unique_ptr
 
@@ -91,6 +92,17 @@ public:
   /// Body-fixed (x, y, z) m -> (longitude deg in [-180, 180], latitude deg, height m).
   bool CartesianToGeodetic(const double xyz[3], double lonLatHeight[3]);
 
+  ///@{
+  /**
+   * The same conversions as return values (Python: `xyz = body.GeodeticToCartesian(lon, lat,
+   * h)`, a tuple): the result lives in this object until its next call (VTK's idiom, not
+   * thread-safe); NaN where the out-parameter form returns false. The out-parameter forms stay
+   * for C++ and for threads.
+   */
+  double* GeodeticToCartesian(double lon, double lat, double height) VTK_SIZEHINT(3);
+  double* CartesianToGeodetic(double x, double y, double z) VTK_SIZEHINT(3);
+  ///@}
+
   /// Unit geodetic surface normal at (longitude, latitude) in degrees.
   void GeodeticSurfaceNormal(double lon, double lat, double normal[3]);
 
@@ -144,6 +156,7 @@ protected:
   void ApplyRadii(double a, double b, double c, const char* name);
 
   double Radii[3];
+  double Result[3] = { 0, 0, 0 }; // the return-value forms' result
   char* Name = nullptr;
   bool UseGeographicLib = true;
 

@@ -726,6 +726,12 @@ void vtkGlobeLayer::GetGeographicExtent(double extent[4])
   }
 }
 
+double* vtkGlobeLayer::GetGeographicExtent()
+{
+  this->GetGeographicExtent(this->ExtentResult);
+  return this->ExtentResult;
+}
+
 void vtkGlobeLayer::GetProjectedGeoTransform(double origin[2], double pixelSize[2])
 {
   for (int i = 0; i < 2; ++i)

@@ -407,6 +407,9 @@ public:
    * layers only (NaN for Projected or invalid layers).
    */
   void GetGeographicExtent(double extent[4]);
+  /// The same as a return value (Python: `west, east, south, north = layer.GetGeographicExtent()`);
+  /// it lives in the layer until the next call.
+  double* GetGeographicExtent() VTK_SIZEHINT(4);
 
   /**
    * Map coordinates of the top-left (north-west) pixel corner and the pixel size (x: east,
@@ -459,6 +462,7 @@ protected:
   int Role = Height;
   int VerticalDatum = Ellipsoidal;
   int ReprojectedFromEPSG = 0;
+  double ExtentResult[4] = { 0, 0, 0, 0 }; // GetGeographicExtent()'s
   char* GeoidFileName = nullptr;
   char* FileName = nullptr;
   char* Name = nullptr;

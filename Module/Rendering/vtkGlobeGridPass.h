@@ -40,8 +40,9 @@ public:
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
   ///@{
-  /// Grid points per side (default 512).
-  vtkSetClampMacro(Resolution, int, 2, 4096);
+  /// Grid points per side (default 512), clamped to 2..2048 (vtkGlobeMapper's range: above
+  /// 2048 the index buffer alone would take more than 100 MB).
+  vtkSetClampMacro(Resolution, int, 2, 2048);
   vtkGetMacro(Resolution, int);
   ///@}
 

@@ -257,6 +257,57 @@ void vtkGlobeMapper::SetBaseColor(double r, double g, double b)
   this->Modified();
 }
 
+double* vtkGlobeMapper::GetBaseColor()
+{
+  return this->Internals->Composite->GetBaseColor();
+}
+
+void vtkGlobeMapper::GetBaseColor(double rgb[3])
+{
+  this->Internals->Composite->GetBaseColor(rgb);
+}
+
+//------------------------------------------------------------------------------
+// No input: refused, not ignored (a cone given to the globe would otherwise vanish silently).
+void vtkGlobeMapper::SetInputConnection(int port, vtkAlgorithmOutput* input)
+{
+  if (input)
+  {
+    vtkErrorMacro(<< "vtkGlobeMapper takes no input (port " << port << "): the globe is drawn "
+                  << "from its ellipsoid and its layers (AddLayer); draw other data with its own "
+                  << "mapper and actor. The input is ignored.");
+  }
+}
+
+void vtkGlobeMapper::SetInputConnection(vtkAlgorithmOutput* input)
+{
+  this->SetInputConnection(0, input);
+}
+
+void vtkGlobeMapper::AddInputConnection(int port, vtkAlgorithmOutput* input)
+{
+  this->SetInputConnection(port, input);
+}
+
+void vtkGlobeMapper::AddInputConnection(vtkAlgorithmOutput* input)
+{
+  this->SetInputConnection(0, input);
+}
+
+void vtkGlobeMapper::SetInputDataObject(int port, vtkDataObject* data)
+{
+  if (data)
+  {
+    vtkErrorMacro(<< "vtkGlobeMapper takes no input data (port " << port << "): the globe is "
+                  << "drawn from its ellipsoid and its layers (AddLayer). The data is ignored.");
+  }
+}
+
+void vtkGlobeMapper::SetInputDataObject(vtkDataObject* data)
+{
+  this->SetInputDataObject(0, data);
+}
+
 void vtkGlobeMapper::SetHighPrecisionGeodetic(bool on)
 {
   if (this->Internals->Layers->GetHighPrecisionGeodetic() != on)

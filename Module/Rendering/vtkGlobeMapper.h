@@ -38,6 +38,7 @@
 #include "vtkGlobeRenderingModule.h" // for export macro
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkSmartPointer.h" // for vtkSmartPointer
+#include "vtkWrappingHints.h" // for VTK_SIZEHINT
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
@@ -92,7 +93,8 @@ public:
   ///@}
 
   ///@{
-  /// Grid points per side of the projective grid (default 512).
+  /// Grid points per side of the projective grid (default 512), clamped to 2..2048 like
+  /// vtkGlobeGridPass's Resolution, which it sets.
   void SetGridResolution(int resolution);
   int GetGridResolution();
   ///@}
@@ -102,6 +104,24 @@ public:
   void SetAmbient(double ambient);
   double GetAmbient();
   void SetBaseColor(double r, double g, double b);
+  double* GetBaseColor() VTK_SIZEHINT(3);
+  void GetBaseColor(double rgb[3]);
+  ///@}
+
+  ///@{
+  /**
+   * The globe has no input: its body is the ellipsoid and its data are its layers (AddLayer).
+   * An input given to the mapper (vtkPolyDataMapper's SetInputConnection / SetInputData) is
+   * refused with an error instead of being silently ignored. Of the inherited settings, the
+   * actor's matrix, visibility and pickability apply, and the mapper's Static; scalar, lookup
+   * table and colour-mode settings have no effect (colour comes from the layers).
+   */
+  void SetInputConnection(int port, vtkAlgorithmOutput* input) override;
+  void SetInputConnection(vtkAlgorithmOutput* input) override;
+  void AddInputConnection(int port, vtkAlgorithmOutput* input) override;
+  void AddInputConnection(vtkAlgorithmOutput* input) override;
+  void SetInputDataObject(int port, vtkDataObject* data) override;
+  void SetInputDataObject(vtkDataObject* data) override;
   ///@}
 
   ///@{

@@ -12,6 +12,7 @@
 - `bash Utilities/globe.sh python SCRIPT` runs a script with that path and a display.
 """
 import glob
+import math
 import os
 import re
 import subprocess
@@ -87,6 +88,46 @@ class TestGlobeWrapping(unittest.TestCase):
         self.assertEqual(extent, [-10.0, 20.0, 40.0, 50.0])
         with self.assertRaises((ValueError, TypeError)):
             layer.SetHeightData(3, 2, values[:5], -10.0, 20.0, 40.0, 50.0)
+
+    def test_return_value_forms(self):
+        # Conversions and the extent as return values (tuples), next to the out-parameter forms.
+        from vtkglobe import vtkGlobeEllipsoid, vtkGlobeLayer
+        body = vtkGlobeEllipsoid()
+        xyz = body.GeodeticToCartesian(0.0, 0.0, 0.0)
+        self.assertEqual(tuple(xyz), (6378137.0, 0.0, 0.0))
+        out = [0.0] * 3
+        self.assertTrue(body.GeodeticToCartesian(0.0, 0.0, 0.0, out))
+        self.assertEqual(out, [6378137.0, 0.0, 0.0])
+        lon, lat, h = body.CartesianToGeodetic(0.0, 6378137.0, 0.0)
+        self.assertAlmostEqual(lon, 90.0, places=12)
+        self.assertAlmostEqual(h, 0.0, places=6)
+        # Bad input: NaN, with the error the out-parameter form reports.
+        from vtkmodules.vtkCommonCore import vtkCommand
+        said = []
+        body.AddObserver(vtkCommand.ErrorEvent, lambda o, e: said.append(e))
+        self.assertTrue(all(math.isnan(v) for v in body.GeodeticToCartesian(float("nan"), 0.0, 0.0)))
+        self.assertEqual(len(said), 1)
+        layer = vtkGlobeLayer()
+        layer.SetHeightData(3, 2, [1.0] * 6, -10.0, 20.0, 40.0, 50.0)
+        self.assertTrue(layer.Update())
+        self.assertEqual(tuple(layer.GetGeographicExtent()), (-10.0, 20.0, 40.0, 50.0))
+
+    def test_mapper_refuses_an_input(self):
+        # The globe takes no input: an input is an error, not silently ignored.
+        from vtkmodules.vtkFiltersSources import vtkConeSource
+        from vtkglobe import vtkGlobeMapper
+        from vtkmodules.vtkCommonCore import vtkCommand
+        mapper = vtkGlobeMapper()
+        errors = []
+        mapper.AddObserver(vtkCommand.ErrorEvent, lambda o, e: errors.append(e))
+        mapper.SetInputConnection(vtkConeSource().GetOutputPort())
+        self.assertEqual(len(errors), 1)
+        self.assertEqual(mapper.GetNumberOfInputConnections(0), 0)
+        mapper.SetBaseColor(0.1, 0.2, 0.3)
+        self.assertEqual(tuple(mapper.GetBaseColor()), (0.1, 0.2, 0.3))
+        mapper.SetGridResolution(4096)
+        self.assertEqual(mapper.GetGridResolution(), 2048)
+        self.assertEqual(mapper.GetGridPass().GetResolution(), 2048)
 
     def test_readme_line_from_a_fresh_shell(self):
         with open(os.path.join(SOURCE, "README.md")) as f:
