@@ -218,8 +218,8 @@ int vtkGlobeCompositePass::GetRoles()
 {
   // Night lights and water masks only matter to the effects that use them, lit.
   int roles = vtkGlobeLayerSet::AllRoles;
-  const int count[2] = { this->Layers->GetNumberOfActiveLayers(vtkGlobeLayer::NightLights),
-    this->Layers->GetNumberOfActiveLayers(vtkGlobeLayer::Mask) };
+  const int count[2] = { this->Layers->GetNumberOfComposedLayers(vtkGlobeLayer::NightLights),
+    this->Layers->GetNumberOfComposedLayers(vtkGlobeLayer::Mask) };
   if (!this->Lighting || !this->NightLights || !count[0])
   {
     roles &= ~(1 << vtkGlobeLayer::NightLights);
@@ -254,9 +254,9 @@ std::string vtkGlobeCompositePass::BuildFragmentShader()
   const std::string effects = key.substr(key.find('|') + 1);
   auto has = [&effects](char c) { return effects.find(c) != std::string::npos; };
   vtkGlobeLayerSet* layers = this->Layers;
-  const bool normalMaps = layers->GetNumberOfActiveLayers(vtkGlobeLayer::NormalMap) > 0;
-  const bool overlays = layers->GetNumberOfActiveLayers(vtkGlobeLayer::Overlay) > 0;
-  const bool colors = layers->GetNumberOfActiveLayers(vtkGlobeLayer::Color) > 0;
+  const bool normalMaps = layers->GetNumberOfComposedLayers(vtkGlobeLayer::NormalMap) > 0;
+  const bool overlays = layers->GetNumberOfComposedLayers(vtkGlobeLayer::Overlay) > 0;
+  const bool colors = layers->GetNumberOfComposedLayers(vtkGlobeLayer::Color) > 0;
 
   std::string functions;
   std::string sample;

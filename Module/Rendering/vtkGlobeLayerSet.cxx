@@ -1,7 +1,9 @@
 #include "vtkGlobeLayerSet.h"
 
+#include "vtkCamera.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
+#include "vtkGlobeEllipsoid.h"
 #include "vtkGlobeGeoid.h"
 #include "vtkGlobeLayer.h"
 #include "vtkGlobeMapProjection.h"
@@ -9,6 +11,7 @@
 #include "vtkGlobePageSource.h"
 #include "vtkDoubleArray.h"
 #include "vtkMath.h"
+#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkShaderProgram.h"
@@ -59,6 +62,12 @@ struct Entry
   double Border[4] = { 0, 0, 0, 0 }; // feather u, v (texture coordinates); 1/log(n); unused
   // Heights above a geoid: the index of its texture in vtkInternals::Geoids, else -1.
   int Geoid = -1;
+  // Per-frame culling (CullLayers): out of the view this frame. The footprint: (lon, lat) in
+  // degrees sampled over the layer's extent, and the spacing of the samples (rad), for the
+  // bulge of the surface between them; empty for layers that are never culled.
+  bool Culled = false;
+  std::vector<std::array<double, 2>> Footprint;
+  double FootprintSpacing = 0.0;
 };
 
 // A geoid grid on the GPU (vtkGlobeLayer::VerticalDatum Geoid): its nodes as an R32F texture
@@ -103,6 +112,9 @@ public:
   vtkNew<vtkGlobePageCache> Pages;
   // Active layers by role, in composition order; Index[] is the uniform index of each.
   std::array<std::vector<Entry*>, NumberOfRoles> Roles;
+  // What the passes compose this frame: Roles without the layers CullLayers culled. The
+  // generated code, its key and the bindings follow this, so a culled layer costs nothing.
+  std::array<std::vector<Entry*>, NumberOfRoles> Composed;
   // Geoids of height layers, kept with their textures; Entry::Geoid indexes this.
   std::vector<GeoidTexture> Geoids;
   int NextAdded = 0;
@@ -135,6 +147,7 @@ public:
     {
       list.clear();
     }
+    this->Composed = this->Roles;
   }
 };
 
@@ -318,6 +331,20 @@ int vtkGlobeLayerSet::Update()
     e.Map[2] = extent[3] * deg;
     e.Map[3] = (extent[3] - extent[2]) * deg;
     e.Wraps = layer->IsGlobal();
+    e.Footprint.clear();
+    if (!e.Wraps)
+    {
+      constexpr int n = 8; // 9 x 9 samples
+      for (int j = 0; j <= n; ++j)
+      {
+        for (int i = 0; i <= n; ++i)
+        {
+          e.Footprint.push_back({ extent[0] + (extent[1] - extent[0]) * i / n,
+            extent[2] + (extent[3] - extent[2]) * j / n });
+        }
+      }
+      e.FootprintSpacing = std::max(extent[1] - extent[0], extent[3] - extent[2]) / n * deg;
+    }
     // A global layer wraps in longitude and has no east/west border; one that reaches both
     // poles has no north/south border.
     e.Border[0] = e.Wraps ? 0.0 : feather / layer->GetWidth();
@@ -336,6 +363,7 @@ int vtkGlobeLayerSet::Update()
 
   for (Entry* e : order)
   {
+    e->Culled = false;
     in.Roles[e->Layer->GetRole()].push_back(e);
   }
   this->ComputeHeightRange();
@@ -448,7 +476,125 @@ bool vtkGlobeLayerSet::PrepareProjection(void* entry)
     return refuse(text);
   }
   e.Function = projection->GetShaderFunctionName();
+  // The footprint for culling: the raster's edges and inside mapped back to (lon, lat).
+  e.Footprint.clear();
+  constexpr int n = 8;
+  const double centreLon = lonLat[0]; // the raster centre's, from the check above
+  vtkObject::GlobalWarningDisplayOff();
+  double west = 1e9, east = -1e9, south = 90.0, north = -90.0;
+  for (int j = 0; j <= n; ++j)
+  {
+    for (int i = 0; i <= n; ++i)
+    {
+      const double x = origin[0] + pixelSize[0] * layer->GetWidth() * i / n;
+      const double y = origin[1] - pixelSize[1] * layer->GetHeight() * j / n;
+      if (projection->Inverse(x, y, lonLat))
+      {
+        // Longitudes unwrapped around the centre's, so a raster across 180 stays one piece.
+        const double lon = centreLon + std::remainder(lonLat[0] - centreLon, 360.0);
+        e.Footprint.push_back({ lon, lonLat[1] });
+        west = std::min(west, lon);
+        east = std::max(east, lon);
+        south = std::min(south, lonLat[1]);
+        north = std::max(north, lonLat[1]);
+      }
+    }
+  }
+  vtkObject::SetGlobalWarningDisplay(warnings);
+  // A raster around a pole, or one whose edges did not all map: never culled.
+  if (e.Footprint.size() < static_cast<size_t>((n + 1) * (n + 1)) || north > 89.0 ||
+    south < -89.0)
+  {
+    e.Footprint.clear();
+  }
+  e.FootprintSpacing = std::max(east - west, north - south) / n * vtkMath::Pi() / 180.0;
   return true;
+}
+
+void vtkGlobeLayerSet::CullLayers(vtkCamera* camera, double aspect, vtkMatrix4x4* bodyToWorld,
+  vtkGlobeEllipsoid* body)
+{
+  auto& in = *this->Internals;
+  this->NumberOfCulledLayers = 0;
+  double planes[24];
+  const bool usable = this->LayerCulling && camera && bodyToWorld && body && aspect > 0.0;
+  if (usable)
+  {
+    camera->GetFrustumPlanes(aspect, planes); // world coordinates, normals inward
+  }
+  for (int role = 0; role < NumberOfRoles; ++role)
+  {
+    for (Entry* e : in.Roles[role])
+    {
+      e->Culled = false;
+      if (!usable || e->Footprint.empty())
+      {
+        continue;
+      }
+      double lo = in.MinimumHeight, hi = in.MaximumHeight;
+      if (role == vtkGlobeLayer::Height)
+      {
+        lo = e->Layer->GetMinimumValue();
+        hi = e->Layer->GetMaximumValue();
+        if (e->Geoid >= 0)
+        {
+          const double* n = in.Geoids[e->Geoid].Geoid->GetRange();
+          lo += n[0];
+          hi += n[1];
+        }
+      }
+      if (!std::isfinite(lo) || !std::isfinite(hi))
+      {
+        continue;
+      }
+      // Between samples the surface bulges above their chords by up to R (1 - cos(a / 2)).
+      const double bulge =
+        body->GetMaximumRadius() * (1.0 - std::cos(std::min(e->FootprintSpacing, 3.0) / 2.0));
+      const double heights[2] = { std::min(lo, 0.0) - 1.0, std::max(hi, 0.0) + bulge + 1.0 };
+      bool outsideSome = false;
+      std::vector<std::array<double, 3>> points;
+      points.reserve(2 * e->Footprint.size());
+      for (const auto& ll : e->Footprint)
+      {
+        for (double h : heights)
+        {
+          const double llh[3] = { ll[0], ll[1], h };
+          double p[4] = { 0, 0, 0, 1 };
+          body->GeodeticToCartesianQuiet(llh, p);
+          bodyToWorld->MultiplyPoint(p, p);
+          points.push_back({ p[0], p[1], p[2] });
+        }
+      }
+      for (int k = 0; k < 6 && !outsideSome; ++k)
+      {
+        const double* q = planes + 4 * k;
+        bool allOutside = true;
+        for (const auto& p : points)
+        {
+          if (q[0] * p[0] + q[1] * p[1] + q[2] * p[2] + q[3] >= 0.0)
+          {
+            allOutside = false;
+            break;
+          }
+        }
+        outsideSome = allOutside;
+      }
+      e->Culled = outsideSome;
+      this->NumberOfCulledLayers += outsideSome ? 1 : 0;
+    }
+  }
+  for (int role = 0; role < NumberOfRoles; ++role)
+  {
+    auto& composed = in.Composed[role];
+    composed.clear();
+    for (Entry* e : in.Roles[role])
+    {
+      if (!e->Culled)
+      {
+        composed.push_back(e);
+      }
+    }
+  }
 }
 
 double vtkGlobeLayerSet::GetMinimumHeight()
@@ -459,6 +605,15 @@ double vtkGlobeLayerSet::GetMinimumHeight()
 double vtkGlobeLayerSet::GetMaximumHeight()
 {
   return this->Internals->MaximumHeight;
+}
+
+int vtkGlobeLayerSet::GetNumberOfComposedLayers(int role)
+{
+  if (role < 0 || role >= NumberOfRoles)
+  {
+    return 0;
+  }
+  return static_cast<int>(this->Internals->Composed[role].size());
 }
 
 int vtkGlobeLayerSet::GetNumberOfActiveHeightLayers()
@@ -566,6 +721,7 @@ void vtkGlobeLayerSet::UploadTextures(vtkOpenGLRenderWindow* window, bool waitFo
                  }),
       list.end());
   }
+  this->Internals->Composed = this->Internals->Roles;
   this->ComputeHeightRange();
 }
 
@@ -796,12 +952,12 @@ std::string vtkGlobeLayerSet::GetShaderKey(int roles)
   key << (this->HighPrecisionGeodetic ? "H:" : "F:");
   for (int role = 0; role < NumberOfRoles; ++role)
   {
-    if (!Included(role, roles) || in.Roles[role].empty())
+    if (!Included(role, roles) || in.Composed[role].empty())
     {
       continue;
     }
     key << RoleFunction(role)[0] << RoleFunction(role)[1] << "[";
-    for (const Entry* e : in.Roles[role])
+    for (const Entry* e : in.Composed[role])
     {
       key << e->Layer->GetBlendMode()
           << (!e->Function.empty() ? e->Function.substr(13, 2) : "g") << (e->Wraps ? "w" : "")
@@ -826,7 +982,7 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
   bool projected = false;
   for (int role = 0; role < NumberOfRoles; ++role)
   {
-    for (const Entry* e : in.Roles[role])
+    for (const Entry* e : in.Composed[role])
     {
       projected |= Included(role, roles) && !e->Function.empty();
     }
@@ -839,7 +995,7 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
   bool streamed[2] = { false, false };
   for (int role = 0; role < NumberOfRoles; ++role)
   {
-    for (const Entry* e : in.Roles[role])
+    for (const Entry* e : in.Composed[role])
     {
       streamed[role == vtkGlobeLayer::Height ? 0 : 1] |= Included(role, roles) && e->Streamed;
     }
@@ -923,7 +1079,7 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
   // Geoids of height layers (vertical datum Geoid): N and its gradient per radian, bilinear
   // between the nodes as vtkGlobeGeoid::GetUndulation (and PROJ) interpolate; w = 0 outside a
   // regional grid or next to a node without value.
-  const std::vector<int> geoids = Included(vtkGlobeLayer::Height, roles) ? UsedGeoids(in.Roles[vtkGlobeLayer::Height]) : std::vector<int>();
+  const std::vector<int> geoids = Included(vtkGlobeLayer::Height, roles) ? UsedGeoids(in.Composed[vtkGlobeLayer::Height]) : std::vector<int>();
   if (!geoids.empty())
   {
     s << "vec4 globe_geoid(sampler2D g, vec4 grid, bool wraps, float lon, float lat)\n"
@@ -952,7 +1108,7 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
   }
   for (int role = 0; role < NumberOfRoles; ++role)
   {
-    const auto& list = in.Roles[role];
+    const auto& list = in.Composed[role];
     if (!Included(role, roles) || list.empty())
     {
       continue;
@@ -1059,10 +1215,12 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
       s << "  w = globe_coverage(uv, " << p << "Border) * " << p << "Style.x;\n";
       if (layer->GetProjectionQualityWeight())
       {
-        s << "  uvE = " << UV(e, p, At(hp, "1e-3"), hp) << ";\n"
-          << "  uvN = " << UV(e, p, At(hp, nullptr, "(lat > 0.0 ? -1e-3 : 1e-3)"), hp) << ";\n"
-          << "  w *= globe_quality(uv, uvE, uvN, cosLat, " << Size(e, p) << ", " << p
-          << "Border.z, " << (e->Wraps ? "true" : "false") << ");\n";
+        s << "  if (w > 0.0)\n  {\n"
+          << "    uvE = " << UV(e, p, At(hp, "1e-3"), hp) << ";\n"
+          << "    uvN = " << UV(e, p, At(hp, nullptr, "(lat > 0.0 ? -1e-3 : 1e-3)"), hp) << ";\n"
+          << "    w *= globe_quality(uv, uvE, uvN, cosLat, " << Size(e, p) << ", " << p
+          << "Border.z, " << (e->Wraps ? "true" : "false") << ");\n"
+          << "  }\n";
       }
       s << "  if (w > 0.0)\n  {\n";
       if (height)
@@ -1159,7 +1317,7 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
         s << "  return c;\n}\n";
     }
   }
-  if (in.Roles[vtkGlobeLayer::Height].empty())
+  if (in.Composed[vtkGlobeLayer::Height].empty())
   {
     // Always defined: the passes call it.
     s << "float globe_composeHeight(float lonHi, float lonLo, float latHi, float latLo, out vec2 gradient)\n"
@@ -1389,7 +1547,7 @@ void vtkGlobeLayerSet::BindTextures(vtkShaderProgram* program, int roles)
   bool streamed[2] = { false, false };
   for (int role = 0; role < NumberOfRoles; ++role)
   {
-    for (const Entry* e : in.Roles[role])
+    for (const Entry* e : in.Composed[role])
     {
       streamed[role == vtkGlobeLayer::Height ? 0 : 1] |= Included(role, roles) && e->Streamed;
     }
@@ -1413,7 +1571,7 @@ void vtkGlobeLayerSet::BindTextures(vtkShaderProgram* program, int roles)
   if (Included(vtkGlobeLayer::Height, roles))
   {
     const double deg = vtkMath::Pi() / 180.0;
-    for (int k : UsedGeoids(in.Roles[vtkGlobeLayer::Height]))
+    for (int k : UsedGeoids(in.Composed[vtkGlobeLayer::Height]))
     {
       const GeoidTexture& g = in.Geoids[k];
       g.Texture->Activate();
@@ -1433,7 +1591,7 @@ void vtkGlobeLayerSet::BindTextures(vtkShaderProgram* program, int roles)
     {
       continue;
     }
-    const auto& list = in.Roles[role];
+    const auto& list = in.Composed[role];
     for (size_t i = 0; i < list.size(); ++i)
     {
       Entry* e = list[i];
@@ -1497,7 +1655,7 @@ void vtkGlobeLayerSet::UnbindTextures(int roles)
   const auto& in = *this->Internals;
   if (Included(vtkGlobeLayer::Height, roles))
   {
-    for (int k : UsedGeoids(in.Roles[vtkGlobeLayer::Height]))
+    for (int k : UsedGeoids(in.Composed[vtkGlobeLayer::Height]))
     {
       in.Geoids[k].Texture->Deactivate();
     }
@@ -1508,7 +1666,7 @@ void vtkGlobeLayerSet::UnbindTextures(int roles)
     {
       continue;
     }
-    for (Entry* e : in.Roles[role])
+    for (Entry* e : in.Composed[role])
     {
       if (!e->Streamed)
       {

@@ -49,8 +49,11 @@
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
+class vtkCamera;
 class vtkDoubleArray;
+class vtkGlobeEllipsoid;
 class vtkGlobeLayer;
+class vtkMatrix4x4;
 class vtkGlobePageCache;
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
@@ -137,6 +140,26 @@ public:
   vtkGetMacro(NumberOfUploads, int);
 
   ///@{
+  /**
+   * Per-frame layer culling (on by default): a layer whose footprint lies wholly outside one
+   * plane of the view frustum costs a uniform test in the grid and screen passes instead of
+   * its projection and texture samples. The footprint is the layer's extent sampled 9 x 9
+   * (projected layers: their raster's edges and inside mapped back to lon/lat) between its
+   * lowest value and its highest plus the bulge of the surface between samples (colour layers:
+   * the composed terrain's range); global layers are never culled. vtkGlobeMapper calls
+   * CullLayers each frame with its camera; GetNumberOfCulledLayers tells the last frame's count.
+   */
+  void CullLayers(vtkCamera* camera, double aspect, vtkMatrix4x4* bodyToWorld,
+    vtkGlobeEllipsoid* body);
+  vtkSetMacro(LayerCulling, bool);
+  vtkGetMacro(LayerCulling, bool);
+  vtkBooleanMacro(LayerCulling, bool);
+  vtkGetMacro(NumberOfCulledLayers, int);
+  /// Active layers of a role that the passes compose this frame (not culled).
+  int GetNumberOfComposedLayers(int role);
+  ///@}
+
+  ///@{
   /// Hi + lo geodetic (lon, lat) from a local origin (default on); part of GetShaderKey().
   vtkSetMacro(HighPrecisionGeodetic, bool);
   vtkGetMacro(HighPrecisionGeodetic, bool);
@@ -176,6 +199,8 @@ protected:
   ~vtkGlobeLayerSet() override;
 
   int NumberOfUploads = 0;
+  bool LayerCulling = true;
+  int NumberOfCulledLayers = 0;
   bool HighPrecisionGeodetic = true;
   double ReferenceDirection[3] = { 1.0, 0.0, 0.0 };
   double ReferenceLonLat[2] = { 0.0, 0.0 };

@@ -752,6 +752,8 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     in.ReductionValid = false;
     return;
   }
+  // Layers out of the view cost nothing in the passes below (a uniform each).
+  in.Layers->CullLayers(camera, ren->GetTiledAspectRatio(), act->GetMatrix(), in.Ellipsoid);
 
   vtkOpenGLState::ScopedglViewport viewportSaver(state);
   vtkRenderState renderState(ren);

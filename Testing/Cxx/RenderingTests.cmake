@@ -45,6 +45,9 @@ list(APPEND globe_rendering_tests
 list(APPEND globe_rendering_tests
   TestGlobeGeodeticEdges.cxx
   TestGlobeVerticalDatum.cxx)
+# Cost (issue 19): layers out of the view are culled, without changing a pixel.
+list(APPEND globe_rendering_tests
+  TestGlobeLayerCulling.cxx)
 # Reliability (issue 16): extreme heights, layers removed while loading, failures reported
 # once, cameras that see nothing reported once.
 list(APPEND globe_rendering_tests
