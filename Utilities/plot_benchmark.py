@@ -88,8 +88,6 @@ def plot_scene(scene, rows, front, path):
     from vtkmodules.vtkChartsCore import vtkAxis, vtkChart, vtkChartXY, vtkPlotPoints
     from vtkmodules.vtkCommonCore import vtkFloatArray
     from vtkmodules.vtkCommonDataModel import vtkTable
-    from vtkmodules.vtkIOImage import vtkPNGWriter
-    from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
     from vtkmodules.vtkViewsContext2D import vtkContextView
     import vtkmodules.vtkRenderingContextOpenGL2  # noqa: F401 (the chart's OpenGL backend)
     import vtkmodules.vtkRenderingFreeType  # noqa: F401 (text)
@@ -174,6 +172,13 @@ def plot_scene(scene, rows, front, path):
     left.SetBehavior(vtkAxis.FIXED)
     left.SetRange(floor / 1.5, fails_y * 2)
 
+    save(view, path)
+
+
+def save(view, path):
+    """Writes a chart view's picture to a PNG (plot_streaming.py uses it too)."""
+    from vtkmodules.vtkIOImage import vtkPNGWriter
+    from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
     view.GetRenderWindow().Render()
     grab = vtkWindowToImageFilter()
     grab.SetInput(view.GetRenderWindow())

@@ -13,6 +13,8 @@ import argparse
 import json
 import os
 
+import plot_benchmark  # the same PNG writing (this script's folder is on sys.path)
+
 COLORS = [(31, 119, 180), (214, 39, 40), (44, 160, 44), (148, 103, 189), (255, 127, 14),
           (140, 86, 75), (127, 127, 127), (188, 189, 34)]
 
@@ -62,16 +64,7 @@ def add_line(chart, name_x, name_y, points, rgb, corner=None):
 
 
 def save(view, path):
-    from vtkmodules.vtkIOImage import vtkPNGWriter
-    from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
-    view.GetRenderWindow().Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(view.GetRenderWindow())
-    grab.Update()
-    writer = vtkPNGWriter()
-    writer.SetFileName(path)
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.Write()
+    plot_benchmark.save(view, path)
     print("wrote", path)
 
 

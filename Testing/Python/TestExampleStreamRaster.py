@@ -11,25 +11,14 @@
 """
 import os
 import re
-import tempfile
 import unittest
 
-from globe_test_support import DATA, Image, run_example
+from globe_test_support import DATA, ExampleTest, Image, run_example
 
 
-class TestExampleStreamRaster(unittest.TestCase):
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.out = os.path.join(self.tmp.name, "out.png")
-
-    def tearDown(self):
-        self.tmp.cleanup()
-
+class TestExampleStreamRaster(ExampleTest):
     def test_help(self):
-        code, stdout, _ = run_example("stream_raster.py", "--help")
-        self.assertEqual(code, 0)
-        for word in ("raster", "--gpu", "--page", "--view", "prepare"):
-            self.assertIn(word, stdout)
+        self.check_help("stream_raster.py", ("raster", "--gpu", "--page", "--view", "prepare"))
 
     def test_missing(self):
         missing = os.path.join(self.tmp.name, "nothing.tif")

@@ -20,10 +20,9 @@
 """
 import os
 import sys
-import tempfile
 import unittest
 
-from globe_test_support import DATA, EXAMPLES, Image, project, run_example
+from globe_test_support import DATA, EXAMPLES, ExampleTest, Image, project, run_example
 from vtkglobe import vtkGlobeEllipsoid
 
 sys.path.insert(0, EXAMPLES)
@@ -32,19 +31,9 @@ import view_geotiff as vg  # noqa: E402
 SIZE = (400, 300)
 
 
-class TestExampleViewGeoTIFF(unittest.TestCase):
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.out = os.path.join(self.tmp.name, "out.png")
-
-    def tearDown(self):
-        self.tmp.cleanup()
-
+class TestExampleViewGeoTIFF(ExampleTest):
     def test_help(self):
-        code, stdout, _ = run_example("view_geotiff.py", "--help")
-        self.assertEqual(code, 0)
-        for word in ("geotiff", "--out", "--interactive", "--role"):
-            self.assertIn(word, stdout)
+        self.check_help("view_geotiff.py", ("geotiff", "--out", "--interactive", "--role"))
 
     def refused(self, path, message):
         code, _, stderr = run_example("view_geotiff.py", path, "--out", self.out)

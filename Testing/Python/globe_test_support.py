@@ -6,6 +6,8 @@ import math
 import os
 import subprocess
 import sys
+import tempfile
+import unittest
 
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL backend)
 from vtkmodules.vtkCommonCore import vtkFloatArray
@@ -156,6 +158,23 @@ def run_example(script, *arguments):
     sys.stdout.write("".join(line + "\n" for line in result.stderr.splitlines()
                              if "texCoordIn" not in line))
     return result.returncode, result.stdout, result.stderr
+
+
+class ExampleTest(unittest.TestCase):
+    """A test of one example script: a temporary folder with the picture's path, and --help."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.out = os.path.join(self.tmp.name, "out.png")
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def check_help(self, script, words):
+        code, stdout, _ = run_example(script, "--help")
+        self.assertEqual(code, 0)
+        for word in words:
+            self.assertIn(word, stdout)
 
 
 class Image:
