@@ -185,17 +185,10 @@ void vtkGlobeGridPass::Render(const vtkRenderState* s)
     return;
   }
   vtkOpenGLState* state = window->GetState();
-  vtkOpenGLState::ScopedglViewport viewportSaver(state);
-  vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDisable(GL_BLEND);
-  state->vtkglDisable(GL_SCISSOR_TEST);
+  const vtkGlobeShaderSources::ScopedOffscreenPass offscreen(state);
 
   const int n = this->Resolution;
   vtkGlobeProjectiveGrid* grid = this->ProjectiveGrid;
-  state->PushFramebufferBindings();
   this->Framebuffer->Bind();
 
   // Step 1: PGM.
@@ -257,8 +250,6 @@ void vtkGlobeGridPass::Render(const vtkRenderState* s)
   this->DirectionTexture->Deactivate();
   this->Framebuffer->RemoveColorAttachments(1);
   this->HeightTimer->ReusableStop();
-
-  state->PopFramebufferBindings();
   ++this->NumberOfRenderedProps;
 }
 

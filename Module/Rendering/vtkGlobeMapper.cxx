@@ -1103,14 +1103,7 @@ void vtkGlobeMapper::ReduceMinimumRadius(
   }
 
   in.ReductionTimer.ReusableStart();
-  vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglViewport viewportSaver(state);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDisable(GL_BLEND);
-  state->vtkglDisable(GL_SCISSOR_TEST);
-  state->PushFramebufferBindings();
+  const vtkGlobeShaderSources::ScopedOffscreenPass offscreen(state);
   in.ReductionFramebuffer->Bind();
   vtkGlobeShaderSources::SetRadii(p, in.Ellipsoid);
   {
@@ -1155,7 +1148,6 @@ void vtkGlobeMapper::ReduceMinimumRadius(
   glReadPixels(0, 0, 1, 1, GL_RED, GL_FLOAT, nullptr);
   glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
   in.ReductionFramebuffer->RemoveColorAttachments(1);
-  state->PopFramebufferBindings();
   in.ReductionTimer.ReusableStop();
   in.ReadbackPending = true;
   for (int i = 0; i < 3; ++i)

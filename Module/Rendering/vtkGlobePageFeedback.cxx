@@ -14,6 +14,7 @@
 #include "vtk_glew.h"
 
 #include "vtkGlobePageFeedbackFS.h"
+#include "vtkGlobeShaderSources.h"
 
 #include <algorithm>
 #include <cmath>
@@ -77,14 +78,7 @@ bool vtkGlobePageFeedback::Render(vtkOpenGLRenderWindow* window, vtkTextureObjec
     return false;
   }
   vtkOpenGLState* state = window->GetState();
-  vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglViewport viewportSaver(state);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDisable(GL_BLEND);
-  state->vtkglDisable(GL_SCISSOR_TEST);
-  state->PushFramebufferBindings();
+  const vtkGlobeShaderSources::ScopedOffscreenPass offscreen(state);
   in.Framebuffer->Bind();
   in.Framebuffer->AddColorAttachment(0, in.Target);
   in.Framebuffer->ActivateDrawBuffers(1);
@@ -117,7 +111,6 @@ bool vtkGlobePageFeedback::Render(vtkOpenGLRenderWindow* window, vtkTextureObjec
   glReadPixels(0, 0, 3 * columns, rows, GL_RGBA, GL_FLOAT, nullptr);
   glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
   in.Framebuffer->RemoveColorAttachments(1);
-  state->PopFramebufferBindings();
   in.Pending = true;
   in.Columns = columns;
   in.Rows = rows;

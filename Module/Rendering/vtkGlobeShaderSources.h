@@ -5,7 +5,9 @@
 #include "globe_ellipsoid.h"
 #include "globe_pgm.h"
 #include "vtkGlobeEllipsoid.h"
+#include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
+#include "vtk_glew.h"
 
 #include <string>
 
@@ -34,6 +36,36 @@ inline void SetRadii(vtkShaderProgram* program, vtkGlobeEllipsoid* body)
   program->SetUniform3f("globeRadii", metres);
   program->SetUniform3f("globeRadiiScaled", scaled);
 }
+
+/// The GL state of a full-screen pass into the globe's own framebuffers (grid pass, reduction,
+/// page feedback): depth test, blending and scissor off and the framebuffer bindings pushed for
+/// the pass; all of it, and the viewport, restored when it goes out of scope.
+class ScopedOffscreenPass
+{
+public:
+  explicit ScopedOffscreenPass(vtkOpenGLState* state)
+    : State(state)
+    , Viewport(state)
+    , Depth(state, GL_DEPTH_TEST)
+    , Blend(state, GL_BLEND)
+    , Scissor(state, GL_SCISSOR_TEST)
+  {
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglDisable(GL_BLEND);
+    state->vtkglDisable(GL_SCISSOR_TEST);
+    state->PushFramebufferBindings();
+  }
+  ~ScopedOffscreenPass() { this->State->PopFramebufferBindings(); }
+  ScopedOffscreenPass(const ScopedOffscreenPass&) = delete;
+  void operator=(const ScopedOffscreenPass&) = delete;
+
+private:
+  vtkOpenGLState* State;
+  vtkOpenGLState::ScopedglViewport Viewport;
+  vtkOpenGLState::ScopedglEnableDisable Depth;
+  vtkOpenGLState::ScopedglEnableDisable Blend;
+  vtkOpenGLState::ScopedglEnableDisable Scissor;
+};
 
 /// Replaces the first occurrence of a marker line in a shader template.
 inline std::string Replace(std::string source, const std::string& marker, const std::string& text)
