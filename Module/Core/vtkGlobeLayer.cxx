@@ -33,6 +33,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <map>
 #include <mutex>
@@ -875,6 +876,20 @@ bool vtkGlobeLayer::Update()
         whole[3] - whole[2] + 1 > this->StreamingThreshold;
     }
   }
+  // A load that throws is a failed load, reported with the reason.
+  const auto guarded = [this](const std::function<bool()>& load) {
+    try
+    {
+      return load();
+    }
+    catch (const std::exception& e)
+    {
+      const bool memory = dynamic_cast<const std::bad_alloc*>(&e) != nullptr;
+      vtkErrorMacro(<< "Cannot load " << this->DescribeSource() << ": "
+                    << (memory ? std::string("not enough memory") : std::string(e.what())));
+      return false;
+    }
+  };
   if (now.Streamed)
   {
     if (this->Valid && now == in.LastLoad)
@@ -884,15 +899,7 @@ bool vtkGlobeLayer::Update()
     this->InvokeEvent(vtkCommand::StartEvent); // page readers let go of this layer
     ++this->NumberOfLoads;
     this->Invalidate();
-    bool ok = false;
-    try
-    {
-      ok = this->LoadStreamed();
-    }
-    catch (const std::exception& e)
-    {
-      vtkErrorMacro(<< "Cannot load " << this->DescribeSource() << ": " << e.what());
-    }
+    const bool ok = guarded([this]() { return this->LoadStreamed(); });
     if (!ok)
     {
       this->Invalidate();
@@ -937,17 +944,7 @@ bool vtkGlobeLayer::Update()
   }
   else
   {
-    try
-    {
-      ok = this->Load(vtkImageData::SafeDownCast(input));
-    }
-    catch (const std::exception& e)
-    {
-      const bool memory = dynamic_cast<const std::bad_alloc*>(&e) != nullptr;
-      vtkErrorMacro(<< "Cannot load " << this->DescribeSource() << ": "
-                    << (memory ? std::string("not enough memory") : std::string(e.what())));
-      ok = false;
-    }
+    ok = guarded([this, input]() { return this->Load(vtkImageData::SafeDownCast(input)); });
   }
   if (!ok)
   {
