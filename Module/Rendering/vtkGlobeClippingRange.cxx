@@ -114,13 +114,21 @@ LocalTerrain ComputeLocalTerrain(vtkGlobeMapper* mapper, double lon, double lat,
   {
     // Heights above a geoid: N at the point, and at most its steepest slope further over the
     // window (the geoid is smooth: EGM96's slopes stay below 1e-3).
+    // A layer whose geoid cannot be read is not drawn (vtkGlobeLayerSet skips it); where a
+    // regional geoid has no N the layer has no weight, so it replaces nothing there.
     double geoidTop = 0.0, geoidAt = 0.0, geoidSlope = 0.0;
+    bool geoidCovers = true;
     if (vtkGlobeGeoid* geoid = layer->GetGeoid())
     {
+      if (!geoid->IsValid())
+      {
+        continue;
+      }
       geoidAt = geoid->GetUndulation(lon, lat);
       geoidSlope = geoid->GetMaximumSlope();
-      geoidTop = std::isfinite(geoidAt) ? geoidAt + geoidSlope * radius : geoid->GetRange()[1];
-      geoidAt = std::isfinite(geoidAt) ? geoidAt : 0.0;
+      geoidCovers = std::isfinite(geoidAt);
+      geoidTop = geoidCovers ? geoidAt + geoidSlope * radius : geoid->GetRange()[1];
+      geoidAt = geoidCovers ? geoidAt : 0.0;
     }
     double e[4];
     layer->GetGeographicExtent(e);
@@ -156,8 +164,10 @@ LocalTerrain ComputeLocalTerrain(vtkGlobeMapper* mapper, double lon, double lat,
     const bool fullLon = global || (x - dLon >= borderX && x + dLon <= e[1] - e[0] - borderX);
     const bool fullLat = (e[2] <= -90.0 && e[3] >= 90.0) ||
       (y - dLat >= borderY && y + dLat <= e[3] - e[2] - borderY);
-    const bool replaces =
-      fullLon && fullLat && (layer->GetNumberOfVoids() == 0 || layer->GetFillVoids());
+    // A reprojected layer has no value outside its source's footprint (unfilled NaN).
+    const bool replaces = fullLon && fullLat && geoidCovers &&
+      layer->GetReprojectedFromEPSG() == 0 &&
+      (layer->GetNumberOfVoids() == 0 || layer->GetFillVoids());
     // More than 64 texels each way: the layer's maximum is a good enough bound.
     if (dLon > 64.0 * texelX || dLat > 64.0 * texelY)
     {

@@ -24,6 +24,7 @@
 #include <array>
 #include <memory>
 #include <cmath>
+#include <functional>
 #include <sstream>
 #include <vector>
 
@@ -78,6 +79,45 @@ struct GeoidTexture
   vtkSmartPointer<vtkTextureObject> Texture;
   vtkMTimeType UploadedTime = 0;
 };
+
+// The footprint CullLayers tests: (lon, lat) at 9 x 9 points (u, v) in [0, 1]^2 over the
+// layer's raster, longitudes unwrapped around the centre's. Left empty, so the layer is never
+// culled, for layers that wrap, reach within a degree of a pole, have a point that does not
+// map, or are so large (samples over 5 degrees apart) that the bulge margin grows too loose.
+void SetFootprint(Entry& e, const std::function<bool(double, double, double[2])>& at)
+{
+  constexpr int n = 8;
+  e.Footprint.clear();
+  double centre[2];
+  if (e.Wraps || !at(0.5, 0.5, centre))
+  {
+    return;
+  }
+  double west = 1e9, east = -1e9, south = 90.0, north = -90.0;
+  for (int j = 0; j <= n; ++j)
+  {
+    for (int i = 0; i <= n; ++i)
+    {
+      double ll[2];
+      if (!at(static_cast<double>(i) / n, static_cast<double>(j) / n, ll))
+      {
+        e.Footprint.clear();
+        return;
+      }
+      const double lon = centre[0] + std::remainder(ll[0] - centre[0], 360.0);
+      e.Footprint.push_back({ lon, ll[1] });
+      west = std::min(west, lon);
+      east = std::max(east, lon);
+      south = std::min(south, ll[1]);
+      north = std::max(north, ll[1]);
+    }
+  }
+  e.FootprintSpacing = std::max(east - west, north - south) / n * vtkMath::Pi() / 180.0;
+  if (north > 89.0 || south < -89.0 || e.FootprintSpacing > 5.0 * vtkMath::Pi() / 180.0)
+  {
+    e.Footprint.clear();
+  }
+}
 
 const char* RoleFunction(int role)
 {
@@ -147,7 +187,23 @@ public:
     {
       list.clear();
     }
-    this->Composed = this->Roles;
+    this->UpdateComposed();
+  }
+
+  // Composed from Roles and each entry's last culling decision (Update() clears it).
+  void UpdateComposed()
+  {
+    for (int role = 0; role < NumberOfRoles; ++role)
+    {
+      this->Composed[role].clear();
+      for (Entry* e : this->Roles[role])
+      {
+        if (!e->Culled)
+        {
+          this->Composed[role].push_back(e);
+        }
+      }
+    }
   }
 };
 
@@ -331,20 +387,11 @@ int vtkGlobeLayerSet::Update()
     e.Map[2] = extent[3] * deg;
     e.Map[3] = (extent[3] - extent[2]) * deg;
     e.Wraps = layer->IsGlobal();
-    e.Footprint.clear();
-    if (!e.Wraps)
-    {
-      constexpr int n = 8; // 9 x 9 samples
-      for (int j = 0; j <= n; ++j)
-      {
-        for (int i = 0; i <= n; ++i)
-        {
-          e.Footprint.push_back({ extent[0] + (extent[1] - extent[0]) * i / n,
-            extent[2] + (extent[3] - extent[2]) * j / n });
-        }
-      }
-      e.FootprintSpacing = std::max(extent[1] - extent[0], extent[3] - extent[2]) / n * deg;
-    }
+    SetFootprint(e, [&extent](double u, double v, double lonLat[2]) {
+      lonLat[0] = extent[0] + (extent[1] - extent[0]) * u;
+      lonLat[1] = extent[3] - (extent[3] - extent[2]) * v;
+      return true;
+    });
     // A global layer wraps in longitude and has no east/west border; one that reaches both
     // poles has no north/south border.
     e.Border[0] = e.Wraps ? 0.0 : feather / layer->GetWidth();
@@ -477,37 +524,13 @@ bool vtkGlobeLayerSet::PrepareProjection(void* entry)
   }
   e.Function = projection->GetShaderFunctionName();
   // The footprint for culling: the raster's edges and inside mapped back to (lon, lat).
-  e.Footprint.clear();
-  constexpr int n = 8;
-  const double centreLon = lonLat[0]; // the raster centre's, from the check above
+  e.Wraps = layer->IsGlobal();
+  const int w = layer->GetWidth(), h = layer->GetHeight();
   vtkObject::GlobalWarningDisplayOff();
-  double west = 1e9, east = -1e9, south = 90.0, north = -90.0;
-  for (int j = 0; j <= n; ++j)
-  {
-    for (int i = 0; i <= n; ++i)
-    {
-      const double x = origin[0] + pixelSize[0] * layer->GetWidth() * i / n;
-      const double y = origin[1] - pixelSize[1] * layer->GetHeight() * j / n;
-      if (projection->Inverse(x, y, lonLat))
-      {
-        // Longitudes unwrapped around the centre's, so a raster across 180 stays one piece.
-        const double lon = centreLon + std::remainder(lonLat[0] - centreLon, 360.0);
-        e.Footprint.push_back({ lon, lonLat[1] });
-        west = std::min(west, lon);
-        east = std::max(east, lon);
-        south = std::min(south, lonLat[1]);
-        north = std::max(north, lonLat[1]);
-      }
-    }
-  }
+  SetFootprint(e, [&](double u, double v, double ll[2]) {
+    return projection->Inverse(origin[0] + pixelSize[0] * w * u, origin[1] - pixelSize[1] * h * v, ll);
+  });
   vtkObject::SetGlobalWarningDisplay(warnings);
-  // A raster around a pole, or one whose edges did not all map: never culled.
-  if (e.Footprint.size() < static_cast<size_t>((n + 1) * (n + 1)) || north > 89.0 ||
-    south < -89.0)
-  {
-    e.Footprint.clear();
-  }
-  e.FootprintSpacing = std::max(east - west, north - south) / n * vtkMath::Pi() / 180.0;
   return true;
 }
 
@@ -531,25 +554,17 @@ void vtkGlobeLayerSet::CullLayers(vtkCamera* camera, double aspect, vtkMatrix4x4
       {
         continue;
       }
-      double lo = in.MinimumHeight, hi = in.MaximumHeight;
-      if (role == vtkGlobeLayer::Height)
-      {
-        lo = e->Layer->GetMinimumValue();
-        hi = e->Layer->GetMaximumValue();
-        if (e->Geoid >= 0)
-        {
-          const double* n = in.Geoids[e->Geoid].Geoid->GetRange();
-          lo += n[0];
-          hi += n[1];
-        }
-      }
+      // Where any layer shows, the surface is the composed terrain (layers below, opacity,
+      // feathers and Add layers all move it), within the set's height range.
+      const double lo = in.MinimumHeight, hi = in.MaximumHeight;
       if (!std::isfinite(lo) || !std::isfinite(hi))
       {
         continue;
       }
-      // Between samples the surface bulges above their chords by up to R (1 - cos(a / 2)).
-      const double bulge =
-        body->GetMaximumRadius() * (1.0 - std::cos(std::min(e->FootprintSpacing, 3.0) / 2.0));
+      // The samples at the top, raised by R_top (1 / cos t - 1), enclose the surface of a cell
+      // whose centre is t = spacing / sqrt(2) from its corners.
+      const double top = body->GetMaximumRadius() + std::max(hi, 0.0);
+      const double bulge = top * (1.0 / std::cos(e->FootprintSpacing / std::sqrt(2.0)) - 1.0);
       const double heights[2] = { std::min(lo, 0.0) - 1.0, std::max(hi, 0.0) + bulge + 1.0 };
       bool outsideSome = false;
       std::vector<std::array<double, 3>> points;
@@ -583,18 +598,7 @@ void vtkGlobeLayerSet::CullLayers(vtkCamera* camera, double aspect, vtkMatrix4x4
       this->NumberOfCulledLayers += outsideSome ? 1 : 0;
     }
   }
-  for (int role = 0; role < NumberOfRoles; ++role)
-  {
-    auto& composed = in.Composed[role];
-    composed.clear();
-    for (Entry* e : in.Roles[role])
-    {
-      if (!e->Culled)
-      {
-        composed.push_back(e);
-      }
-    }
-  }
+  in.UpdateComposed();
 }
 
 double vtkGlobeLayerSet::GetMinimumHeight()
@@ -721,7 +725,9 @@ void vtkGlobeLayerSet::UploadTextures(vtkOpenGLRenderWindow* window, bool waitFo
                  }),
       list.end());
   }
-  this->Internals->Composed = this->Internals->Roles;
+  // Culling decided earlier in the frame stands (the mapper uploads again while it waits for
+  // pages).
+  this->Internals->UpdateComposed();
   this->ComputeHeightRange();
 }
 

@@ -142,11 +142,12 @@ public:
   ///@{
   /**
    * Per-frame layer culling (on by default): a layer whose footprint lies wholly outside one
-   * plane of the view frustum costs a uniform test in the grid and screen passes instead of
-   * its projection and texture samples. The footprint is the layer's extent sampled 9 x 9
-   * (projected layers: their raster's edges and inside mapped back to lon/lat) between its
-   * lowest value and its highest plus the bulge of the surface between samples (colour layers:
-   * the composed terrain's range); global layers are never culled. vtkGlobeMapper calls
+   * plane of the view frustum is left out of the generated grid and screen programs this frame
+   * (a changed culled set builds them anew). The footprint is the layer's extent sampled 9 x 9
+   * (projected layers: their raster's edges and inside mapped back to lon/lat) between the
+   * composed terrain's lowest and highest heights plus the bulge of the surface between
+   * samples; layers that wrap, reach within a degree of a pole or span more than 40 degrees
+   * are never culled. vtkGlobeMapper calls
    * CullLayers each frame with its camera; GetNumberOfCulledLayers tells the last frame's count.
    */
   void CullLayers(vtkCamera* camera, double aspect, vtkMatrix4x4* bodyToWorld,

@@ -752,7 +752,7 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     in.ReductionValid = false;
     return;
   }
-  // Layers out of the view cost nothing in the passes below (a uniform each).
+  // Layers out of the view are left out of the passes below.
   in.Layers->CullLayers(camera, ren->GetTiledAspectRatio(), act->GetMatrix(), in.Ellipsoid);
 
   vtkOpenGLState::ScopedglViewport viewportSaver(state);

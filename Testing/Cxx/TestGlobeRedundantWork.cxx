@@ -49,7 +49,7 @@ int TestGlobeRedundantWork(int, char*[])
 
   // Nothing about the layers changes: no upload, no build (the same layers are in view: all
   // but the Everest inset, on the far side of the body beyond the far plane).
-  const double elsewhere[3] = { -100, 40, 2.2e7 }, there[3] = { -100, 40, 0 };
+  const double elsewhere[3] = { -60, 10, 2.0e7 }, there[3] = { -60, 10, 0 };
   scene.Look(elsewhere, there, 30);
   scene.Mapper->SetAmbient(0.3);
   scene.Mapper->SetBaseColor(0.2, 0.2, 0.2);
