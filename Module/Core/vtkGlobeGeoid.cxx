@@ -8,7 +8,10 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <vector>
 #include <limits>
 #include <string>
 
@@ -56,25 +59,31 @@ vtkGlobeGeoid::~vtkGlobeGeoid()
 
 const char* vtkGlobeGeoid::GetEGM96FileName()
 {
-  static std::string found;
-  found.clear();
-  for (const char* variable : { "PROJ_DATA", "PROJ_LIB" })
-  {
-    const char* dir = std::getenv(variable);
-    if (dir && *dir)
+  // Looked up once (thread-safe); $PROJ_DATA and $PROJ_LIB may list several folders.
+  static const std::string found = []() {
+    std::vector<std::string> folders;
+    for (const char* variable : { "PROJ_DATA", "PROJ_LIB" })
     {
-      const std::string path = std::string(dir) + "/egm96_15.gtx";
-      if (std::ifstream(path).good())
+      std::stringstream list(std::getenv(variable) ? std::getenv(variable) : "");
+      for (std::string folder; std::getline(list, folder, ':');)
       {
-        found = path;
-        return found.c_str();
+        if (!folder.empty())
+        {
+          folders.push_back(folder);
+        }
       }
     }
-  }
-  if (std::ifstream("/usr/share/proj/egm96_15.gtx").good())
-  {
-    found = "/usr/share/proj/egm96_15.gtx";
-  }
+    folders.push_back("/usr/share/proj");
+    for (const std::string& folder : folders)
+    {
+      const std::string path = folder + "/egm96_15.gtx";
+      if (std::ifstream(path).good())
+      {
+        return path;
+      }
+    }
+    return std::string();
+  }();
   return found.c_str();
 }
 
@@ -116,7 +125,12 @@ bool vtkGlobeGeoid::Read(const char* fileName)
     vtkErrorMacro(<< "Geoid file " << fileName << " is shorter than a GTX header (40 bytes)");
     return false;
   }
-  const double south = BigEndianDouble(header), west = BigEndianDouble(header + 8);
+  const double south = BigEndianDouble(header);
+  double west = BigEndianDouble(header + 8);
+  if (west >= 180.0)
+  {
+    west -= 360.0; // as PROJ reads such grids (e.g. 0..360 regional grids for Alaska)
+  }
   const double dLat = BigEndianDouble(header + 16), dLon = BigEndianDouble(header + 24);
   const std::uint32_t rows = BigEndian32(header + 32), columns = BigEndian32(header + 36);
   if (!(std::abs(south) <= 90.0) || !std::isfinite(west) || !(dLat > 0.0) || !(dLon > 0.0) ||
@@ -129,6 +143,15 @@ bool vtkGlobeGeoid::Read(const char* fileName)
     return false;
   }
   const size_t count = static_cast<size_t>(rows) * columns;
+  // The header's size against the file's, before allocating (a 40-byte file may claim 40 GB).
+  std::error_code error;
+  const auto fileBytes = std::filesystem::file_size(fileName, error);
+  if (error || fileBytes < 40 + 4 * count)
+  {
+    vtkErrorMacro(<< "Geoid file " << fileName << " is truncated: " << rows << " x " << columns
+                  << " values need " << count * 4 + 40 << " bytes");
+    return false;
+  }
   std::string bytes(count * 4, '\0');
   if (!file.read(&bytes[0], static_cast<std::streamsize>(bytes.size())))
   {

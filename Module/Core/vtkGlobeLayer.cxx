@@ -24,7 +24,6 @@
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
-#include "vtkWeakPointer.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -403,6 +402,7 @@ class vtkGlobeLayer::vtkInternals
 {
 public:
   vtkSmartPointer<vtkGlobeGeoid> Geoid; // GeoidFileName's, shared through SharedGeoid
+  bool Global = false;                    // IsGlobal, decided once per load
   enum Sources
   {
     None,
@@ -518,19 +518,19 @@ vtkGlobeLayer::~vtkGlobeLayer()
 //------------------------------------------------------------------------------------------
 namespace
 {
-// One geoid object per file name while any layer holds it: a 15' grid is 4 MB, and the
-// layer set uploads one texture per geoid object.
+// One geoid object per file name for the process: a 15' grid is 4 MB, and the layer set
+// uploads one texture per geoid object. Held for good (few files; no weak pointers that a
+// layer released on a page-reading thread could race with).
 vtkSmartPointer<vtkGlobeGeoid> SharedGeoid(const std::string& fileName)
 {
-  static std::map<std::string, vtkWeakPointer<vtkGlobeGeoid>> geoids;
+  static std::map<std::string, vtkSmartPointer<vtkGlobeGeoid>> geoids;
   static std::mutex mutex;
   std::lock_guard<std::mutex> lock(mutex);
-  vtkSmartPointer<vtkGlobeGeoid> geoid = geoids[fileName].Get();
+  vtkSmartPointer<vtkGlobeGeoid>& geoid = geoids[fileName];
   if (!geoid)
   {
     geoid = vtkSmartPointer<vtkGlobeGeoid>::New();
     geoid->SetFileName(fileName.c_str());
-    geoids[fileName] = geoid;
   }
   return geoid;
 }
@@ -744,18 +744,7 @@ void vtkGlobeLayer::GetProjectedGeoTransform(double origin[2], double pixelSize[
 
 bool vtkGlobeLayer::IsGlobal()
 {
-  if (!this->Valid)
-  {
-    return false;
-  }
-  if (this->ModelType == Projected)
-  {
-    return vtkGlobeMapProjection::SpansAllLongitudes(
-      this->EPSG, this->Internals->PixelSize[0], this->RasterWidth);
-  }
-  const double* e = this->Internals->Extent;
-  // Tolerate rounding in the pixel size (e.g. 360 / 2048 written with 15 digits).
-  return this->ModelType == Geographic && e[1] - e[0] >= 360.0 - 1e-7;
+  return this->Valid && this->Internals->Global;
 }
 
 double vtkGlobeLayer::GetDegreesPerPixel(int axis)
@@ -775,6 +764,8 @@ void vtkGlobeLayer::Invalidate()
   this->Valid = false;
   in.Data = nullptr;
   in.Streamed = false;
+  in.Global = false;
+  this->ReprojectedFromEPSG = 0;
   this->RasterWidth = this->RasterHeight = this->NumberOfComponents = 0;
   this->NumberOfVoids = 0;
   this->NumberOfImplausibleValues = 0;
@@ -1128,13 +1119,18 @@ bool vtkGlobeLayer::ReadPage(int level, int column, int row, vtkDataArray* page)
     in.Values.High = any ? std::max(in.Values.High, high) : high;
   }
   vtkGlobePageSource* pages = in.Pages;
-  if (!voids || !v.Fill ||
-    std::all_of(values, values + heights->GetNumberOfValues(), [](float x) { return std::isnan(x); }))
+  if (!voids || !v.Fill)
   {
     return true;
   }
   if (level + 1 >= pages->GetNumberOfLevels())
   {
+    // (A page of voids only, e.g. all sea, is filled from its parent below; only here, with
+    // no parent, is there nothing to fill it from.)
+    if (std::all_of(values, values + heights->GetNumberOfValues(), [](float x) { return std::isnan(x); }))
+    {
+      return true;
+    }
     // The coarsest level is this one page: the whole push-pull fill, as for whole layers.
     const int T = pages->GetPageTexels();
     std::vector<float> page(values, values + static_cast<size_t>(T) * T);
@@ -1523,6 +1519,10 @@ bool vtkGlobeLayer::Load(vtkImageData* image, int streamedRows)
     // PROJ shifted the source datum: the grid is WGS 84's, as other EPSG:4326 layers.
     this->DatumSemiMajorAxis = this->DatumSemiMinorAxis = 0.0;
   }
+  // Once per load: whether it wraps east-west (asked every frame).
+  in.Global = (this->ModelType == Geographic || this->ModelType == Projected) &&
+    vtkGlobeMapProjection::IsGlobalRaster(
+      this->ModelType == Geographic, this->EPSG, in.PixelSize[0], this->RasterWidth);
   if (in.Source == vtkInternals::Input && !this->FileName)
   {
     const std::string file = FieldString(fd, vtkGlobeRasterReader::GetFileNameArrayName());

@@ -275,7 +275,16 @@ bool vtkGlobeMapProjection::SpansAllLongitudes(double pixelWidth, int width)
   // Within half a pixel of a whole turn the wrap's misregistration is below half a pixel,
   // where a feathered seam would fade a whole band to the base colour.
   return turn > 0.0 && Finite(pixelWidth) && pixelWidth > 0.0 && width > 0 &&
-    pixelWidth * width >= turn - 0.5 * pixelWidth;
+    std::abs(pixelWidth * width - turn) <= 0.5 * pixelWidth;
+}
+
+bool vtkGlobeMapProjection::IsGlobalRaster(bool geographic, int code, double pixelWidth, int width)
+{
+  if (geographic)
+  {
+    return Finite(pixelWidth) && width * pixelWidth >= 360.0 - 1e-7;
+  }
+  return SpansAllLongitudes(code, pixelWidth, width);
 }
 
 bool vtkGlobeMapProjection::IsSupportedEPSG(int code)

@@ -181,12 +181,19 @@ public:
   /**
    * Whether a raster `width` pixels of `pixelWidth` map units wide spans all longitudes, so it
    * wraps east-west (no seam, no feather at the antimeridian): cylindrical kinds only, within
-   * half a pixel of one whole turn (a wider raster counts too). Geographic rasters keep
-   * vtkGlobeLayer::IsGlobal's own rule.
+   * half a pixel of one whole turn (wider or narrower would misregister the wrap).
    */
   bool SpansAllLongitudes(double pixelWidth, int width);
   /// The same for a raster in EPSG:`code`; false for unsupported codes (without an error).
   static bool SpansAllLongitudes(int code, double pixelWidth, int width);
+
+  /**
+   * The one rule for a raster that wraps east-west (vtkGlobeLayer::IsGlobal, the page
+   * source): a geographic raster (pixel width in degrees) at least 360 degrees wide, less
+   * 1e-7 for a pixel size written with 15 digits (readers refuse wider than 360 plus a
+   * pixel); a projected one by SpansAllLongitudes.
+   */
+  static bool IsGlobalRaster(bool geographic, int code, double pixelWidth, int width);
 
   /// Whether SetFromEPSG knows `code` (the projections the GPU draws exactly; layers in other
   /// CRSs are reprojected on load, vtkGlobeLayer::GetReprojectedFromEPSG).

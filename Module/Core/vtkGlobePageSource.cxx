@@ -224,10 +224,8 @@ std::string Build(const std::string& file, int pageSize, int border, double cach
   }
   s.HasNoData = fd->GetAbstractArray(vtkGlobeRasterReader::GetNoDataValueArrayName()) != nullptr;
   s.NoData = s.HasNoData ? number(vtkGlobeRasterReader::GetNoDataValueArrayName(), 0) : 0.0;
-  // vtkGlobeLayer::IsGlobal's rule.
-  s.Global = s.ModelType == vtkGlobeRasterReader::Geographic
-    ? s.Width * s.Geo[2] >= 360.0 - 1e-7
-    : vtkGlobeMapProjection::SpansAllLongitudes(s.EPSG, s.Geo[2], s.Width);
+  s.Global = vtkGlobeMapProjection::IsGlobalRaster(
+    s.ModelType == vtkGlobeRasterReader::Geographic, s.EPSG, s.Geo[2], s.Width);
   s.FlipColumns = number(vtkGlobeRasterReader::GetStorageOrientationArrayName(), 0) == 1;
   s.FlipRows = number(vtkGlobeRasterReader::GetStorageOrientationArrayName(), 1) == 1;
 

@@ -217,8 +217,8 @@ int IdentifyEPSG(
         {
           code = std::atoi(id);
           confidence = confidences[i];
-          const char* n = proj_get_name(candidate);
-          name = n ? n : "";
+          const char* found = proj_get_name(candidate);
+          name = found ? found : "";
           if (projected)
           {
             *projected = proj_get_type(candidate) == PJ_TYPE_PROJECTED_CRS;

@@ -160,7 +160,7 @@ bool vtkGlobeReprojection::ToGeographic(int code, const double origin[2], const 
   }
   const double lonSpan = std::max(east - west, ground), latSpan = std::max(north - south, ground);
   double w = std::ceil(lonSpan / (ground / cosLat)), h = std::ceil(latSpan / ground);
-  const double bytesPerTexel = heights ? 4.0 : 4.0;
+  const double bytesPerTexel = 4.0; // a float height or 4 bytes of RGBA
   const double shrink = std::max({ 1.0, w / MaximumSide, h / MaximumSide,
     std::sqrt(w * h * bytesPerTexel / std::max(maxBytes, 1.0)) });
   w = std::max(1.0, std::ceil(w / shrink));

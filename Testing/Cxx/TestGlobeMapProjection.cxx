@@ -225,6 +225,13 @@ int TestGlobeMapProjection(int, char*[])
   Expect(vtkGlobeMapProjection::SpansAllLongitudes(3857, turn / 256 * (1 - 0.4 / 256), 256) &&
       !vtkGlobeMapProjection::SpansAllLongitudes(3857, turn / 256 * (1 - 0.6 / 256), 256),
     "EPSG:3857: a raster 0.4 pixel short of a turn wraps, 0.6 pixel short does not");
+  Expect(!vtkGlobeMapProjection::SpansAllLongitudes(3857, turn / 256 * (1 + 0.6 / 256), 256) &&
+      !vtkGlobeMapProjection::SpansAllLongitudes(3857, turn / 256 * 1.5, 256),
+    "EPSG:3857: 0.6 pixel or half a turn too wide does not wrap (the overlap would misregister)");
+  Expect(vtkGlobeMapProjection::IsGlobalRaster(true, 4326, 360.0 / 2048, 2048) &&
+      !vtkGlobeMapProjection::IsGlobalRaster(true, 4326, 0.1, 3599) &&
+      vtkGlobeMapProjection::IsGlobalRaster(false, 4087, turn / 1000, 1000),
+    "IsGlobalRaster: geographic 360 degrees yes, 359.9 no; projected by SpansAllLongitudes");
   Expect(!vtkGlobeMapProjection::SpansAllLongitudes(3413, 1e5, 1000) &&
       !vtkGlobeMapProjection::SpansAllLongitudes(32633, 1e5, 1000) && !observer->GetError(),
     "polar stereographic and UTM rasters never wrap");
