@@ -7,11 +7,13 @@
 //     inside a source texel (away from its edges by 2 %) holds that texel's colour.
 //  B. Heights linear in the source's map coordinates: the bilinear resampling reproduces them
 //     at every geographic texel centre inside the source (within 1 mm).
-//  C. The layer says what happened: GetReprojectedFromEPSG, geographic model, its box.
+//  C. A CRS PROJ cannot take to (lon, lat) is refused with an error saying so. (A also checks
+//     that the layer says what happened: GetReprojectedFromEPSG, geographic model, its box.)
 #include "vtkGlobeLayerTestHelpers.h"
 #include "vtkGlobeTestHelpers.h"
 
 #include "vtkGlobeMapProjection.h"
+#include "vtkTestErrorObserver.h"
 
 #include <GeographicLib/LambertConformalConic.hpp>
 
@@ -127,11 +129,12 @@ int TestGlobeLayerReprojection(int, char*[])
   Check.Expect(ramp->Update() && ramp->GetReprojectedFromEPSG() == 2154, "the ramp loaded and reprojected");
   vtkDataArray* heights = ramp->GetData();
   double worst = 0.0;
-  int inside = 0, voids = 0;
+  int inside = 0, voids = 0, beyond = 0;
   ForEachTexel(ramp, l93, [&](vtkIdType id, double fx, double fy) {
     const double v = heights->GetComponent(id, 0);
     if (fx < -0.5 || fy < -0.5 || fx > W - 0.5 || fy > H - 0.5)
     {
+      ++beyond;
       voids += std::isnan(v) ? 1 : 0;
       return;
     }
@@ -142,9 +145,23 @@ int TestGlobeLayerReprojection(int, char*[])
     ++inside;
     worst = std::max(worst, std::isnan(v) ? 1e9 : std::abs(v - (3.0 * fx + 7.0 * fy)));
   });
-  Check.Expect(inside > 2000 && worst < 1e-3 && voids > 0,
+  Check.Expect(inside > 2000 && worst < 1e-3 && beyond > 0 && voids == beyond,
     vtkGlobeTest::Printf("%d texel centres inside the source: worst |h - ramp| %.2g m (ramp "
-                         "slope 7 m per texel); outside the source: NaN (%d)",
-      inside, worst, voids));
+                         "slope 7 m per texel); outside the source: %d of %d NaN",
+      inside, worst, voids, beyond));
+
+  std::printf("C. A raster in a CRS PROJ cannot take to longitude and latitude:\n");
+  // EPSG:5773 is a vertical CRS (EGM96 height): no horizontal transformation exists.
+  auto far = vtkGlobeTest::ProjectedHeights(5773, 8, 8, 0.0, 8000.0, 1000.0,
+    [](int, int) { return 1.0f; });
+  vtkNew<vtkTest::ErrorObserver> errors;
+  far->AddObserver(vtkCommand::ErrorEvent, errors);
+  const bool farLoaded = far->Update();
+  std::string said = errors->GetErrorMessage();
+  said = said.substr(std::min(said.find("Cannot load"), said.size()));
+  said = said.substr(0, said.find('\n'));
+  Check.Expect(!farLoaded && errors->GetError() &&
+      errors->GetErrorMessage().find("EPSG:5773 cannot be reprojected") != std::string::npos,
+    "refused with an error that says why (" + said + ")");
   return Check.Result();
 }

@@ -37,8 +37,10 @@ class TestExampleStreamRaster(ExampleTest):
         final = re.search(r"final after (\d+) frames", stdout)
         self.assertIsNotNone(final, stdout)
         loaded = [int(m.group(1)) for m in re.finditer(r"^\s*\d+\s+[\d.]+\s+\d+\s+(\d+)", stdout, re.M)]
+        self.assertTrue(loaded, stdout)
         self.assertGreater(loaded[-1], 1, stdout)
         memory = re.search(r"GPU page cache ([\d.]+) MiB", stdout)
+        self.assertIsNotNone(memory, stdout)
         self.assertLessEqual(float(memory.group(1)), 1.02, stdout)
         image = Image(self.out)
         pixels = [p for _, _, p in image.pixels()]
