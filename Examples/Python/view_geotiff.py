@@ -7,7 +7,8 @@ raster whose GeoTIFF names another body's ellipsoid (e.g. the Moon's 1,737,400 m
 drawn alone on that body. Geographic (longitude/latitude) rasters and projected ones are drawn
 as they are, without reprojection, in the projections the globe knows: equirectangular, polar
 stereographic, Mercator, Web Mercator and transverse Mercator / UTM (EPSG codes in
-Documentation/projections.md).
+Documentation/projections.md); a raster in any other CRS that PROJ knows is reprojected to
+longitude/latitude when it loads.
 """
 import math
 import os

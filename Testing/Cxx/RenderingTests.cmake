@@ -41,7 +41,8 @@ list(APPEND globe_rendering_tests
 # Geodetic precision (issue 5): 0.5 m data at +-180 degrees and +-80 degrees as at (0, 0).
 list(APPEND globe_rendering_tests
   TestGlobeGeodeticPrecision.cxx)
-# Geodetic correctness (issue 18): projected layers at the poles and the antimeridian.
+# Geodetic correctness (issue 18): projected layers at the poles and the antimeridian; heights
+# above the EGM96 geoid against PROJ.
 list(APPEND globe_rendering_tests
   TestGlobeGeodeticEdges.cxx
   TestGlobeVerticalDatum.cxx)

@@ -15,7 +15,6 @@
 #include "vtkGlobeRenderingTestHelpers.h"
 #include "vtkGlobeTestHelpers.h"
 
-#include "vtkGlobeCompositePass.h"
 
 #include <cmath>
 #include <cstdio>

@@ -19,16 +19,9 @@
 #include "vtkGlobeRenderingTestHelpers.h"
 #include "vtkGlobeTestHelpers.h"
 
-#include "vtkDoubleArray.h"
-#include "vtkFieldData.h"
 #include "vtkGlobeCompositePass.h"
 #include "vtkGlobeLayerSet.h"
-#include "vtkGlobeRasterReader.h"
-#include "vtkImageData.h"
-#include "vtkIntArray.h"
-#include "vtkPointData.h"
 #include "vtkRegressionTestImage.h"
-#include "vtkUnsignedCharArray.h"
 
 #include <cstdio>
 

@@ -111,7 +111,7 @@ class TestExampleViewGeoTIFF(ExampleTest):
                     'UNIT["metre",1],AUTHORITY["EPSG","%d"]]' % (epsg, epsg))
         return base + ".tif"
 
-    def test_projected_refused(self):
+    def test_other_crs_reprojected_and_outside_domain_refused(self):
         lambert = self.write_world_file_tiff("lambert93", 700000.0, 6600000.0, 1000.0, 2154)
         code, stdout, stderr = run_example("view_geotiff.py", lambert, "--out", self.out)
         self.assertEqual(code, 0, stderr)
