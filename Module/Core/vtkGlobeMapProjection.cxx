@@ -404,6 +404,29 @@ bool vtkGlobeMapProjection::Inverse(double x, double y, double lonLat[2])
   return true;
 }
 
+bool vtkGlobeMapProjection::ForwardInDomain(double lon, double lat, double xy[2])
+{
+  xy[0] = xy[1] = NaN;
+  if (!this->IsInValidDomain(lon, lat) || !this->ForwardUnchecked(lon, lat, xy))
+  {
+    xy[0] = xy[1] = NaN;
+    return false;
+  }
+  return true;
+}
+
+bool vtkGlobeMapProjection::InverseInDomain(double x, double y, double lonLat[2])
+{
+  lonLat[0] = lonLat[1] = NaN;
+  if (!Finite(x) || !Finite(y) || !this->InverseUnchecked(x, y, lonLat) ||
+    !this->IsInValidDomain(lonLat[0], lonLat[1]))
+  {
+    lonLat[0] = lonLat[1] = NaN;
+    return false;
+  }
+  return true;
+}
+
 bool vtkGlobeMapProjection::InverseUnchecked(double x, double y, double lonLat[2])
 {
   const double a = this->SemiMajorAxis, f = this->Flattening;

@@ -141,6 +141,17 @@ public:
   bool Inverse(double x, double y, double lonLat[2]);
   ///@}
 
+  ///@{
+  /**
+   * Forward and Inverse without messages, for callers that probe many points some of which
+   * lie outside by design (page requests, footprints): false (NaN) where the point is not
+   * finite, has no finite image, or (lon, lat) lies outside IsInValidDomain. They never touch
+   * the process-wide warning flag, which other threads read.
+   */
+  bool ForwardInDomain(double lon, double lat, double xy[2]);
+  bool InverseInDomain(double x, double y, double lonLat[2]);
+  ///@}
+
   /**
    * West, east, south, north (degrees; east may exceed 180) of the region where the
    * projection is valid and used: the whole globe for Geographic and Equirectangular,

@@ -526,11 +526,10 @@ bool vtkGlobeLayerSet::PrepareProjection(void* entry)
   // The footprint for culling: the raster's edges and inside mapped back to (lon, lat).
   e.Wraps = layer->IsGlobal();
   const int w = layer->GetWidth(), h = layer->GetHeight();
-  vtkObject::GlobalWarningDisplayOff();
   SetFootprint(e, [&](double u, double v, double ll[2]) {
-    return projection->Inverse(origin[0] + pixelSize[0] * w * u, origin[1] - pixelSize[1] * h * v, ll);
+    return projection->InverseInDomain(
+      origin[0] + pixelSize[0] * w * u, origin[1] - pixelSize[1] * h * v, ll);
   });
-  vtkObject::SetGlobalWarningDisplay(warnings);
   return true;
 }
 
@@ -1403,11 +1402,9 @@ void vtkGlobeLayerSet::RequestPages(vtkDoubleArray* footprints, int blockPixels,
           uv[1] = (e->Map[2] - lat) / e->Map[3];
           return true;
         }
+        // Points outside the projection's domain are expected (the shader shows nothing there).
         double xy[2];
-        const bool warnings = vtkObject::GetGlobalWarningDisplay();
-        vtkObject::GlobalWarningDisplayOff(); // points outside the domain are expected
-        const bool ok = e->Projection->Forward(lon * deg, lat * deg, xy);
-        vtkObject::SetGlobalWarningDisplay(warnings);
+        const bool ok = e->Projection->ForwardInDomain(lon * deg, lat * deg, xy);
         uv[0] = (xy[0] - origin[0]) / (pixel[0] * W);
         uv[1] = (origin[1] - xy[1]) / (pixel[1] * H);
         return ok && std::isfinite(uv[0]) && std::isfinite(uv[1]);

@@ -142,6 +142,10 @@ class vtkGlobePageCache::vtkInternals
 public:
   // Main thread only.
   std::map<vtkGlobeLayer*, LayerState> Layers;
+  // Layers whose pyramid or coarsest page could not be read or placed, by their load count:
+  // not tried again every frame (each try would read the file and restart the readers),
+  // only after they reload, the cache is reconfigured or a registered layer frees its slots.
+  std::map<vtkGlobeLayer*, std::pair<vtkWeakPointer<vtkGlobeLayer>, int>> Refused;
   std::vector<vtkGlobeLayer*> FrameLayers;
   Atlas Atlases[2];
   std::unordered_set<PageKey> InFlight[2]; // per kind: (layer id, page) hashed below
@@ -155,7 +159,6 @@ public:
   int NextId = 1;
   int AllocatedPageSize = 0;
   double AllocatedMemory = 0.0;
-  bool ReportedFull = false;
 
   // Shared with the workers.
   std::mutex Mutex;
@@ -177,6 +180,18 @@ public:
   {
     auto it = this->Layers.find(layer);
     return it == this->Layers.end() ? nullptr : &it->second;
+  }
+
+  bool IsRefused(vtkGlobeLayer* layer)
+  {
+    auto it = this->Refused.find(layer);
+    return it != this->Refused.end() && it->second.first.GetPointer() == layer &&
+      it->second.second == layer->GetNumberOfLoads();
+  }
+
+  void Refuse(vtkGlobeLayer* layer)
+  {
+    this->Refused[layer] = { layer, layer->GetNumberOfLoads() };
   }
 
   LayerState* FindId(int id)
@@ -335,6 +350,7 @@ void vtkGlobePageCache::Flush()
     kv.second.Resident.clear();
   }
   in.Layers.clear();
+  in.Refused.clear();
   for (auto& a : in.Atlases)
   {
     for (size_t i = 0; i < a.Slots.size(); ++i)
@@ -367,13 +383,22 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
   // rebuilt or destroyed under live threads that used it crashed the soak program (in
   // ImageCacheFile::get_imageinput, and in ~ImageCacheTile at exit). Such changes are rare;
   // new threads start at once.
-  bool same = in.AllocatedPageSize == this->PageSize && in.AllocatedMemory == this->GPUMemory &&
-    in.FrameLayers.size() == in.Layers.size();
+  // A refused layer has no reads in flight: it neither joins nor leaves the readers' work.
+  bool same = in.AllocatedPageSize == this->PageSize && in.AllocatedMemory == this->GPUMemory;
+  size_t registered = 0;
   for (vtkGlobeLayer* layer : in.FrameLayers)
   {
-    LayerState* s = in.Find(layer);
-    same = same && s && s->Loads == layer->GetNumberOfLoads();
+    if (LayerState* s = in.Find(layer))
+    {
+      same = same && s->Loads == layer->GetNumberOfLoads();
+      ++registered;
+    }
+    else
+    {
+      same = same && in.IsRefused(layer);
+    }
   }
+  same = same && registered == in.Layers.size();
   if (!same)
   {
     in.LetGo();
@@ -422,6 +447,11 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
       it->second.Table->ReleaseGraphicsResources(window);
     }
     it = in.Layers.erase(it);
+    in.Refused.clear(); // its pinned slot may take a refused layer's coarsest page
+  }
+  for (auto it = in.Refused.begin(); it != in.Refused.end();)
+  {
+    it = it->second.first ? std::next(it) : in.Refused.erase(it);
   }
 
   // Atlases: allocated at first use, GPUMemory each, no more layers than GL allows.
@@ -549,7 +579,7 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
   // undefined texel).
   for (vtkGlobeLayer* layer : listed)
   {
-    if (in.Find(layer))
+    if (in.Find(layer) || in.IsRefused(layer))
     {
       continue;
     }
@@ -563,7 +593,8 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
     s.Levels = pages->GetNumberOfLevels();
     if (s.Levels <= 0 || s.Levels > 63)
     {
-      continue; // the page source reported why
+      in.Refuse(layer); // the page source reported why
+      continue;
     }
     int firstRow = 1;
     int size0[2];
@@ -592,6 +623,7 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
     }
     if (!layer->ReadPage(s.Levels - 1, 0, 0, coarsest))
     {
+      in.Refuse(layer); // the layer reported why
       continue;
     }
     LayerState& stored = in.Layers[layer] = std::move(s);
@@ -599,14 +631,11 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
     stored.Observer = LayerObserver(layer, vtkCommand::StartEvent, in.ReloadObserver);
     if (!upload(stored, MakeKey(stored.Levels - 1, 0, 0), coarsest, true))
     {
-      if (!in.ReportedFull)
-      {
-        vtkErrorMacro(<< "The GPU page cache has no room for the coarsest page of layer '"
-                      << layer->GetName() << "' (" << this->GetNumberOfSlots(stored.Kind)
-                      << " slots, all pinned); raise GPUMemory");
-        in.ReportedFull = true;
-      }
+      vtkErrorMacro(<< "The GPU page cache has no room for the coarsest page of layer '"
+                    << layer->GetName() << "' (" << this->GetNumberOfSlots(stored.Kind)
+                    << " slots, all pinned); raise GPUMemory. The layer is skipped");
       in.Layers.erase(layer);
+      in.Refuse(layer);
       continue;
     }
   }
@@ -863,6 +892,7 @@ void vtkGlobePageCache::ReleaseGraphicsResources(vtkWindow* window)
     }
   }
   in.Layers.clear();
+  in.Refused.clear();
   for (auto& a : in.Atlases)
   {
     if (a.Handle)

@@ -8,6 +8,7 @@
 #include "vtkGlobeRenderingTestHelpers.h"
 #include "vtkGlobeTestHelpers.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkFloatArray.h"
 #include "vtkGlobeLayerSet.h"
 #include "vtkGlobePageCache.h"
@@ -272,6 +273,57 @@ void MemoryBound()
   Checks.Expect(gpu <= 4.0 * 1048576.0 + 256.0 * 1024.0,
     "GPU memory within the 4 MiB cache (and the page tables)");
 }
+// One streamed layer that cannot be registered (here: its coarsest page finds no free slot)
+// is skipped with one error, and the others go on streaming. Before, the cache restarted its
+// reading threads every frame for want of that layer, dropping every read: no page beyond the
+// pinned coarsest ones ever loaded, for any layer.
+void OneLayerRefused(const std::string& image)
+{
+  vtkGlobeTest::Scene scene(64, 64, 64);
+  scene.Mapper->LightingOff();
+  vtkGlobePageCache* cache = scene.Mapper->GetPageCache();
+  cache->SetPageSize(64);
+  const double texels = 64.0 + 2.0 * vtkGlobePageCache::Border;
+  cache->SetGPUMemory(4.5 * texels * texels * 4.0 / 1048576.0); // 4 slots per kind
+  int errors = 0;
+  vtkNew<vtkCallbackCommand> count;
+  count->SetClientData(&errors);
+  count->SetCallback([](vtkObject*, unsigned long, void* n, void*) { ++*static_cast<int*>(n); });
+  cache->AddObserver(vtkCommand::ErrorEvent, count);
+  // Five height layers for four slots: the fifth coarsest page has no room.
+  for (int i = 0; i < 5; ++i)
+  {
+    vtkNew<vtkGlobeLayer> relief;
+    relief->SetFileName((std::string(VTKGLOBE_DATA_DIR) + "/earth/relief_2deg.tif").c_str());
+    relief->SetRoleToHeight();
+    relief->SetStreamingToOn();
+    relief->SetName(("relief " + std::to_string(i)).c_str());
+    scene.Mapper->AddLayer(relief);
+  }
+  vtkNew<vtkGlobeLayer> layer;
+  layer->SetFileName(image.c_str());
+  layer->SetRoleToColor();
+  layer->SetStreamingToOn();
+  scene.Mapper->AddLayer(layer);
+  const double camera[3] = { -157.5, 67.5, 120000.0 }, target[3] = { -157.5, 67.5, 0.0 };
+  scene.Look(camera, target, 30.0);
+  int frames = 0;
+  for (; frames < 300 && !(frames > 1 && scene.Mapper->IsStreamingIdle()); ++frames)
+  {
+    scene.Window->Render();
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  const long long loaded = cache->GetNumberOfLoadedPages();
+  std::printf("  5 height layers and 1 image for 4 slots per kind: %d streamed layers composed, "
+              "%d error(s), %lld pages loaded (5 pinned coarsest pages), idle after %d frames\n",
+    scene.Mapper->GetLayerSet()->GetNumberOfStreamedLayers(), errors, loaded, frames);
+  Checks.Expect(scene.Mapper->GetLayerSet()->GetNumberOfStreamedLayers() == 5,
+    "the layer without room is skipped, the other five are composed");
+  Checks.Expect(errors == 1, vtkGlobeTest::Printf("reported once (%d errors)", errors));
+  Checks.Expect(loaded > 5 && frames < 300,
+    "the other layers go on streaming (pages beyond the pinned ones load, the cache settles)");
+  Checks.Expect(vtkGlobeTest::NoGLError(), "no OpenGL error with a refused layer");
+}
 } // namespace
 
 int TestGlobeStreaming(int, char*[])
@@ -388,6 +440,7 @@ int TestGlobeStreaming(int, char*[])
     "GPU memory within the cache (8 pages and the page table)");
   Checks.Expect(vtkGlobeTest::NoGLError(), "no OpenGL error");
 
+  OneLayerRefused(path);
   MemoryBound();
   return Checks.Result();
 }
