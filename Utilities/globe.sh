@@ -16,8 +16,17 @@
 #                                     GeoTIFF with reduced-resolution levels (GlobePrepare)
 #   Utilities/globe.sh python script.py [args]   build, then run a Python script with the
 #                                     build's vtkglobe package, under Xvfb when there is no display
+#   Utilities/globe.sh check [args]   the whole C++ suite under AddressSanitizer and UBSan, in
+#                                     its own build (build-check/; ctest args pass on)
+#   Utilities/globe.sh fuzz [TARGET|all] [SECONDS] [libFuzzer args]
+#                                     build the libFuzzer targets with clang (build-fuzz/) and run
+#                                     each for SECONDS (default 60); findings in build-fuzz/crashes
 #
-# Environment: VTKGLOBE_BUILD_DIR (default: build/ in the source tree).
+# `test` also runs the CI's sanitizer subset (Core and the fuzz corpus replays, build-check-core/;
+# VTKGLOBE_SANITIZER_TESTS=0 skips it). Documentation/reliability.md, "Fuzzing and sanitizers".
+#
+# Environment: VTKGLOBE_BUILD_DIR (default: build/ in the source tree), VTKGLOBE_CHECK_DIR
+# (build-check/), VTKGLOBE_CHECK_CORE_DIR (build-check-core/), VTKGLOBE_FUZZ_DIR (build-fuzz/).
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -40,9 +49,13 @@ as_root() {
   if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi
 }
 
+# Only for `fuzz`: clang and its sanitizer runtimes with libFuzzer.
+fuzz_packages=(clang-14 libclang-rt-14-dev)
+
+# Installs the missing ones of `packages` and of the packages named as arguments.
 install_packages() {
   local missing=()
-  for p in "${packages[@]}"; do
+  for p in "${packages[@]}" "$@"; do
     if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
       missing+=("$p")
     fi
@@ -61,6 +74,50 @@ build_project() {
   fi
   echo "== building"
   cmake --build "$build" --parallel "$(nproc)"
+}
+
+# The sanitizer builds: AddressSanitizer (with LeakSanitizer) and UBSan, -O1 with frame
+# pointers for readable stacks; no Python wrapping (the Python tests do not run under them).
+sanitize_flags="-fsanitize=address,undefined -fno-omit-frame-pointer -g -O1"
+configure_sanitized() {
+  local dir="$1"
+  shift
+  if [ ! -f "$dir/CMakeCache.txt" ]; then
+    echo "== configuring the sanitizer build in $dir"
+    cmake -S "$root" -B "$dir" -DCMAKE_BUILD_TYPE=Sanitize \
+      -DCMAKE_C_FLAGS_SANITIZE="$sanitize_flags" -DCMAKE_CXX_FLAGS_SANITIZE="$sanitize_flags" \
+      -DCMAKE_EXE_LINKER_FLAGS_SANITIZE="-fsanitize=address,undefined" \
+      -DCMAKE_SHARED_LINKER_FLAGS_SANITIZE="-fsanitize=address,undefined" \
+      -DCMAKE_MODULE_LINKER_FLAGS_SANITIZE="-fsanitize=address,undefined" \
+      -DVTKGLOBE_WRAP_PYTHON=OFF -DPython3_EXECUTABLE=/usr/bin/python3 "$@"
+  fi
+}
+
+# How the sanitized programs run: any report fails the test (UBSan halts on its first);
+# LeakSanitizer skips only the leaks of Mesa, X11 and libraries' singletons listed, each with
+# its reason, in Testing/Sanitizers/lsan.supp. Full stacks for every allocation
+# (fast_unwind_on_malloc=0): the system libraries have no frame pointers, and a suppression
+# must see the library frame that owns a leak.
+asan_options="detect_leaks=1:halt_on_error=1:abort_on_error=0:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1"
+sanitizer_env=(
+  ASAN_OPTIONS="$asan_options:fast_unwind_on_malloc=0"
+  LSAN_OPTIONS="suppressions=$root/Testing/Sanitizers/lsan.supp:print_suppressions=0"
+  UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
+)
+
+# The CI's part of the sanitizer suite: the Core module alone (no rendering), its
+# reader/layer/page-source tests and the fuzz corpus replays (Documentation/reliability.md).
+sanitizer_ci_tests='^(Fuzz\.Replay\..*|Core\.TestGlobe(RasterReader|RasterReaderHardening|LayerBadInput|LayerRead|PageSource))$'
+run_sanitizer_ci() {
+  local dir="${VTKGLOBE_CHECK_CORE_DIR:-$root/build-check-core}"
+  configure_sanitized "$dir" -DVTKGLOBE_BUILD_RENDERING=OFF
+  echo "== building the Core module and its tests under the sanitizers ($dir)"
+  cmake --build "$dir" --parallel "$(nproc)" --target GlobeCoreCxxTests \
+    GlobeFuzzReplayRasterReader GlobeFuzzReplayWorldFile GlobeFuzzReplayLayer \
+    GlobeFuzzReplayPageSource
+  echo "== running the sanitizer subset"
+  (cd "$dir" && env "${sanitizer_env[@]}" ctest --output-on-failure --timeout 900 \
+    -R "$sanitizer_ci_tests")
 }
 
 # Runs a command with a display: the user's, or a private Xvfb server (Mesa's llvmpipe gives
@@ -93,8 +150,74 @@ case "$command" in
     install_packages
     build_project
     echo "== running the tests"
-    cd "$build"
-    with_display ctest --output-on-failure --timeout 900 "$@"
+    (cd "$build" && with_display ctest --output-on-failure --timeout 900 "$@")
+    if [ "${VTKGLOBE_SANITIZER_TESTS:-1}" != 0 ]; then
+      run_sanitizer_ci
+    fi
+    ;;
+  check)
+    install_packages
+    check="${VTKGLOBE_CHECK_DIR:-$root/build-check}"
+    configure_sanitized "$check"
+    echo "== building under AddressSanitizer and UBSan"
+    start=$(date +%s)
+    cmake --build "$check" --parallel "$(nproc)"
+    echo "== built in $(( $(date +%s) - start )) s"
+    echo "== running the C++ tests under the sanitizers (not Install.Downstream: it links"
+    echo "   an uninstrumented program against the instrumented libraries)"
+    start=$(date +%s)
+    cd "$check"
+    status=0
+    with_display env "${sanitizer_env[@]}" ctest --output-on-failure --timeout 1800 \
+      -E '^Install\.' "$@" || status=$?
+    echo "== tests ran in $(( $(date +%s) - start )) s"
+    exit "$status"
+    ;;
+  fuzz)
+    install_packages "${fuzz_packages[@]}"
+    fuzz="${VTKGLOBE_FUZZ_DIR:-$root/build-fuzz}"
+    if [ ! -f "$fuzz/CMakeCache.txt" ]; then
+      # Core only, every library of ours instrumented for coverage and the sanitizers; the
+      # fuzz programs add libFuzzer (Testing/Fuzz/CMakeLists.txt).
+      fuzz_flags="-g -O1 -fno-omit-frame-pointer -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined"
+      echo "== configuring the fuzz build in $fuzz"
+      cmake -S "$root" -B "$fuzz" -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 \
+        -DCMAKE_BUILD_TYPE=Fuzz -DCMAKE_C_FLAGS_FUZZ="$fuzz_flags" -DCMAKE_CXX_FLAGS_FUZZ="$fuzz_flags" \
+        -DCMAKE_EXE_LINKER_FLAGS_FUZZ="-fsanitize=address,undefined" \
+        -DCMAKE_SHARED_LINKER_FLAGS_FUZZ="-fsanitize=address,undefined" \
+        -DBUILD_TESTING=OFF -DVTKGLOBE_BUILD_RENDERING=OFF -DVTKGLOBE_WRAP_PYTHON=OFF \
+        -DVTKGLOBE_BUILD_FUZZERS=ON -DPython3_EXECUTABLE=/usr/bin/python3
+    fi
+    targets=(RasterReader WorldFile Layer PageSource)
+    target="${1:-all}"
+    seconds="${2:-60}"
+    shift 2 || shift $#
+    if [ "$target" != all ]; then
+      targets=("$target")
+    fi
+    echo "== building the fuzz targets"
+    cmake --build "$fuzz" --parallel "$(nproc)" --target "${targets[@]/#/GlobeFuzz}"
+    for t in "${targets[@]}"; do
+      # New inputs go to build-fuzz/corpus/T; the committed seeds and crashers are only read.
+      # A finding is written to build-fuzz/crashes/T/ (copy it to Testing/Fuzz/crashers/T/).
+      mkdir -p "$fuzz/corpus/$t" "$fuzz/crashes/$t"
+      seeds=("$root/Testing/Fuzz/corpus/$t")
+      if [ -d "$root/Testing/Fuzz/crashers/$t" ]; then
+        seeds+=("$root/Testing/Fuzz/crashers/$t")
+      fi
+      # Fuzzing with frame-pointer stacks and no leak check (4 times faster: the full stacks
+      # the suppressions need cost a DWARF unwind per allocation); then every input of the
+      # grown corpus once more with the leak check and full stacks.
+      echo "== fuzzing $t for $seconds s"
+      env "${sanitizer_env[@]}" ASAN_OPTIONS="$asan_options:detect_leaks=0" "$fuzz/bin/GlobeFuzz$t" \
+        -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=60 -detect_leaks=0 \
+        -print_final_stats=1 -artifact_prefix="$fuzz/crashes/$t/" "$@" "$fuzz/corpus/$t" \
+        "${seeds[@]}"
+      echo "== leak check of $t's corpus"
+      env "${sanitizer_env[@]}" "$fuzz/bin/GlobeFuzz$t" -runs=0 -detect_leaks=1 \
+        -rss_limit_mb=2048 -timeout=60 -artifact_prefix="$fuzz/crashes/$t/" \
+        "$fuzz/corpus/$t" "${seeds[@]}"
+    done
     ;;
   bench)
     install_packages
@@ -156,7 +279,7 @@ case "$command" in
       /usr/bin/python3 "$@"
     ;;
   *)
-    echo "usage: $0 demo|test|bench|bench-streaming|build|prepare|python [args]" >&2
+    echo "usage: $0 demo|test|check|fuzz|bench|bench-streaming|build|prepare|python [args]" >&2
     exit 2
     ;;
 esac
