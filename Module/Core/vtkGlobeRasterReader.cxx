@@ -114,6 +114,28 @@ TIFF* OpenTIFF(const std::string& fileName, std::string*)
 }
 #endif
 
+/// libgeotiff's errors (e.g. "Key 2054 of unknown type." for a corrupt key directory): kept, the
+/// first one, for the reason of a failure (GTIFNew printed them to stderr, where an application
+/// cannot see them, and said nothing else).
+void CollectGeoTIFFError(GTIF* gtif, int level, const char* format, ...)
+{
+  auto* text = static_cast<std::string*>(GTIFGetUserData(gtif));
+  if (level != LIBGEOTIFF_ERROR || !text || !text->empty())
+  {
+    return;
+  }
+  char buffer[512];
+  va_list args;
+  va_start(args, format);
+  std::vsnprintf(buffer, sizeof(buffer), format, args);
+  va_end(args);
+  *text = buffer;
+  while (!text->empty() && (text->back() == '.' || text->back() == '\n'))
+  {
+    text->pop_back();
+  }
+}
+
 //------------------------------------------------------------------------------------------
 // GeoKeys. GTIFKeyGet copies as many bytes as the key's STORED type has: a SHORT key stored as
 // DOUBLE writes 8 bytes into a 2-byte unsigned short (a stack overflow that let a corrupt
@@ -770,11 +792,13 @@ bool ReadGeoTIFF(const std::string& fileName, TIFFInfo& info, std::string& why)
     return true; // no GeoTIFF georeferencing: perhaps a world file
   }
 
-  closer.Gtif = GTIFNew(tif);
+  std::string geotiffError;
+  closer.Gtif = GTIFNewEx(tif, CollectGeoTIFFError, &geotiffError);
   GTIF* gtif = closer.Gtif;
   if (!gtif)
   {
-    why = "its GeoTIFF keys cannot be read";
+    why = "its GeoTIFF keys cannot be read" +
+      (geotiffError.empty() ? std::string() : " (libgeotiff: " + geotiffError + ")");
     return false;
   }
   // Every key through GetShortKey/GetDoubleKey: a key of the wrong type is an error.

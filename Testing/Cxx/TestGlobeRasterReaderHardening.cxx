@@ -308,6 +308,16 @@ int TestGlobeRasterReaderHardening(int, char*[])
 
   std::printf("GeoKeys of the wrong type (defect 1):\n");
   {
+    // A key stored in a tag that is not a GeoKey params tag (found by Testing/Fuzz): libgeotiff
+    // refuses the directory, and its reason is in the error (it went to stderr before, and the
+    // error only said the keys cannot be read).
+    File f;
+    f.Keys[1] = { GTRasterTypeGeoKey, 12345, 1, 0 };
+    ExpectRefused("hardening_key_location.tif", f,
+      { "GeoTIFF keys cannot be read", "libgeotiff: Key 1025 of unknown type" },
+      "a GeoKey in an unknown TIFF tag");
+  }
+  {
     File f;
     f.Keys[0] = { GTModelTypeGeoKey, InDoubles, 1, 0 };
     f.Doubles = { 2.0 };
