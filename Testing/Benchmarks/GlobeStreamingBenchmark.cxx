@@ -9,7 +9,7 @@
 //
 //   GlobeStreamingBenchmark --data DATA_DIR --planet WIDTH:HEIGHTS.tif:IMAGERY.tif ...
 //       [--frames 240] [--window 640x480] [--grid 256] [--gpu 120] [--incore-max 8192]
-//       [--json PATH]
+//       [--interleaved-only] [--json PATH]
 //
 // Per block of 10 frames: median frame time (Render + glFinish, wall clock); the camera's
 // height at the block's last frame; pages loaded and evicted and bytes uploaded in the block;
@@ -20,7 +20,9 @@
 // and the steady frame time: the median over frames 5/12 to 7/12 of the flight (the close-up,
 // cache warm) and its last sixth (far, warm). Frames never wait for pages
 // (vtkGlobeMapper::WaitForPages off): the picture refines over the following frames, as in an
-// interactive application.
+// interactive application. Then, for data that ran both ways, the two fly again interleaved
+// (frame i streamed, frame i in-core, ...) for a ratio that a changing load on the machine
+// does not bias; `--interleaved-only` runs that part alone.
 #include "vtkGlobeRenderingTestHelpers.h"
 #include "vtkGlobeTestHelpers.h"
 
@@ -36,6 +38,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -66,6 +69,8 @@ struct Run
   std::string Label, Mode;
   int Width = 0;
   double FirstMs = 0, SteadyMs = 0, PeakRSS = 0, PeakGPU = 0;
+  // Streamed runs with an in-core twin: the interleaved flight (FlyPaired); 0 without.
+  double PairedMs = 0, PairedIncoreMs = 0, PairedRatio = 0, PairedCpuRatio = 0;
   std::vector<Block> Blocks;
   std::vector<double> Frames;
 };
@@ -97,16 +102,9 @@ double Place(vtkGlobeTest::Scene& scene, int i, int n)
   return camera[2];
 }
 
-Run Fly(const std::string& data, const Planet& planet, bool streamed, int frames, int w, int h,
-  int grid, double gpu, std::vector<std::vector<unsigned char>>& images)
+// The flight's layers: the planet's heights and imagery, and the Rainier inset (whole).
+void AddLayers(vtkGlobeMapper* mapper, const std::string& data, const Planet& planet, bool streamed)
 {
-  Run run;
-  run.Width = planet.Width;
-  run.Mode = streamed ? "streamed" : "in-core";
-  run.Label = run.Mode + " " + std::to_string(planet.Width);
-  vtkGlobeTest::Scene scene(w, h, grid);
-  vtkGlobeMapper* mapper = scene.Mapper;
-  mapper->GetPageCache()->SetGPUMemory(gpu);
   auto add = [&](const std::string& file, bool height) {
     auto layer = vtkSmartPointer<vtkGlobeLayer>::New();
     layer->SetFileName(file.c_str());
@@ -125,6 +123,28 @@ Run Fly(const std::string& data, const Planet& planet, bool streamed, int frames
   add(planet.Heights, true);
   add(data + "/earth/mt_rainier_90m.tif", true);
   add(planet.Imagery, false);
+}
+
+// The steady frames of a flight: the middle (the close-up, cache warm) and the last sixth
+// (far, warm).
+std::vector<double> Steady(const std::vector<double>& ms, int frames)
+{
+  std::vector<double> steady(ms.begin() + frames * 5 / 12, ms.begin() + frames * 7 / 12);
+  steady.insert(steady.end(), ms.end() - frames / 6, ms.end());
+  return steady;
+}
+
+Run Fly(const std::string& data, const Planet& planet, bool streamed, int frames, int w, int h,
+  int grid, double gpu, std::vector<std::vector<unsigned char>>& images)
+{
+  Run run;
+  run.Width = planet.Width;
+  run.Mode = streamed ? "streamed" : "in-core";
+  run.Label = run.Mode + " " + std::to_string(planet.Width);
+  vtkGlobeTest::Scene scene(w, h, grid);
+  vtkGlobeMapper* mapper = scene.Mapper;
+  mapper->GetPageCache()->SetGPUMemory(gpu);
+  AddLayers(mapper, data, planet, streamed);
   vtkRenderWindow* window = scene.Window;
   vtkGlobePageCache* cache = mapper->GetPageCache();
   Block block;
@@ -169,11 +189,68 @@ Run Fly(const std::string& data, const Planet& planet, bool streamed, int frames
       times.clear();
     }
   }
-  // Steady: the middle of the flight (the close-up, cache warm) and the last sixth (far, warm).
-  std::vector<double> steady(run.Frames.begin() + frames * 5 / 12, run.Frames.begin() + frames * 7 / 12);
-  steady.insert(steady.end(), run.Frames.end() - frames / 6, run.Frames.end());
-  run.SteadyMs = Median(steady);
+  run.SteadyMs = Median(Steady(run.Frames, frames));
   return run;
+}
+
+// Streamed against in-core with the frames interleaved: both scenes fly the same path, frame i
+// streamed then frame i in-core, so a load that comes and goes on the machine weighs on both
+// alike (the runs above follow each other, and spread by about +-10 % on a quiet machine).
+// Gives the steady frame times of both and the median of the per-frame ratios.
+// Also the process's CPU time per frame (every thread: llvmpipe's included), which another
+// load on the machine inflates much less than wall-clock time.
+struct Paired
+{
+  double StreamedMs = 0, IncoreMs = 0, Ratio = 0;
+  double StreamedCpuMs = 0, IncoreCpuMs = 0, CpuRatio = 0;
+};
+
+double CpuMs()
+{
+  timespec t;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return t.tv_sec * 1e3 + t.tv_nsec * 1e-6;
+}
+
+Paired FlyPaired(const std::string& data, const Planet& planet, int frames, int w, int h, int grid,
+  double gpu)
+{
+  vtkGlobeTest::Scene streamed(w, h, grid), incore(w, h, grid);
+  streamed.Mapper->GetPageCache()->SetGPUMemory(gpu);
+  AddLayers(streamed.Mapper, data, planet, true);
+  AddLayers(incore.Mapper, data, planet, false);
+  std::vector<double> a, b, ca, cb;
+  for (int i = 0; i < frames; ++i)
+  {
+    for (vtkGlobeTest::Scene* scene : { &streamed, &incore })
+    {
+      Place(*scene, i, frames);
+      const double cpu = CpuMs();
+      const auto start = std::chrono::steady_clock::now();
+      scene->Window->Render();
+      glFinish();
+      (scene == &streamed ? a : b)
+        .push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+      (scene == &streamed ? ca : cb).push_back(CpuMs() - cpu);
+    }
+  }
+  auto ratio = [frames](const std::vector<double>& x, const std::vector<double>& y) {
+    const std::vector<double> sx = Steady(x, frames), sy = Steady(y, frames);
+    std::vector<double> r;
+    for (size_t k = 0; k < sx.size(); ++k)
+    {
+      r.push_back(sx[k] / sy[k]);
+    }
+    return Median(r);
+  };
+  Paired p;
+  p.StreamedMs = Median(Steady(a, frames));
+  p.IncoreMs = Median(Steady(b, frames));
+  p.Ratio = ratio(a, b);
+  p.StreamedCpuMs = Median(Steady(ca, frames));
+  p.IncoreCpuMs = Median(Steady(cb, frames));
+  p.CpuRatio = ratio(ca, cb);
+  return p;
 }
 } // namespace
 
@@ -182,6 +259,7 @@ int main(int argc, char* argv[])
   std::string data, json;
   std::vector<Planet> planets;
   int frames = 240, w = 640, h = 480, grid = 256, incoreMax = 8192;
+  bool interleavedOnly = false;
   double gpu = 120.0;
   for (int i = 1; i < argc; ++i)
   {
@@ -222,6 +300,10 @@ int main(int argc, char* argv[])
     {
       incoreMax = std::atoi(next().c_str());
     }
+    else if (arg == "--interleaved-only")
+    {
+      interleavedOnly = true;
+    }
     else if (arg == "--json")
     {
       json = next();
@@ -230,7 +312,7 @@ int main(int argc, char* argv[])
     {
       std::fprintf(stderr,
         "usage: GlobeStreamingBenchmark --data DIR --planet WIDTH:HEIGHTS:IMAGERY ... [--frames N] "
-        "[--window WxH] [--grid N] [--gpu MiB] [--incore-max W] [--json PATH]\n");
+        "[--window WxH] [--grid N] [--gpu MiB] [--incore-max W] [--interleaved-only] [--json PATH]\n");
       return 2;
     }
   }
@@ -246,6 +328,14 @@ int main(int argc, char* argv[])
   };
   for (const Planet& p : planets)
   {
+    if (interleavedOnly)
+    {
+      const Paired q = FlyPaired(data, p, frames, w, h, grid, gpu);
+      std::printf("%d wide, interleaved: steady %.1f ms streamed, %.1f ms in-core, median ratio "
+                  "%.3f; CPU time %.1f ms / %.1f ms, ratio %.3f\n",
+        p.Width, q.StreamedMs, q.IncoreMs, q.Ratio, q.StreamedCpuMs, q.IncoreCpuMs, q.CpuRatio);
+      continue;
+    }
     std::vector<std::vector<unsigned char>> streamedImages, incoreImages;
     runs.push_back(Fly(data, p, true, frames, w, h, grid, gpu, streamedImages));
     const size_t streamedRun = runs.size() - 1;
@@ -268,6 +358,17 @@ int main(int argc, char* argv[])
     }
     const Run& r = runs[streamedRun];
     print(r);
+    if (p.Width <= incoreMax)
+    {
+      const Paired q = FlyPaired(data, p, frames, w, h, grid, gpu);
+      runs[streamedRun].PairedMs = q.StreamedMs;
+      runs[streamedRun].PairedIncoreMs = q.IncoreMs;
+      runs[streamedRun].PairedRatio = q.Ratio;
+      runs[streamedRun].PairedCpuRatio = q.CpuRatio;
+      std::printf("  interleaved with in-core: steady %.1f ms streamed, %.1f ms in-core, "
+                  "median ratio %.3f; CPU time %.1f ms / %.1f ms, ratio %.3f\n",
+        q.StreamedMs, q.IncoreMs, q.Ratio, q.StreamedCpuMs, q.IncoreCpuMs, q.CpuRatio);
+    }
     std::printf("  %6s %10s %8s %7s %7s %9s %8s %8s %9s %6s\n", "frames", "height m", "ms",
       "loaded", "evicted", "uploaded", "RSS", "GPU", "resident", "error");
     for (const Block& b : r.Blocks)
@@ -289,7 +390,14 @@ int main(int argc, char* argv[])
       out << (i ? ", " : "") << "{\"label\": \"" << r.Label << "\", \"mode\": \"" << r.Mode
           << "\", \"width\": " << r.Width << ", \"first_ms\": " << r.FirstMs
           << ", \"steady_ms\": " << r.SteadyMs << ", \"peak_rss_mib\": " << r.PeakRSS
-          << ", \"peak_gpu_mib\": " << r.PeakGPU << ", \"frame_ms\": [";
+          << ", \"peak_gpu_mib\": " << r.PeakGPU;
+      if (r.PairedRatio > 0)
+      {
+        out << ", \"interleaved\": {\"streamed_steady_ms\": " << r.PairedMs
+            << ", \"incore_steady_ms\": " << r.PairedIncoreMs << ", \"ratio\": " << r.PairedRatio
+            << ", \"cpu_time_ratio\": " << r.PairedCpuRatio << "}";
+      }
+      out << ", \"frame_ms\": [";
       for (size_t k = 0; k < r.Frames.size(); ++k)
       {
         out << (k ? ", " : "") << r.Frames[k];
