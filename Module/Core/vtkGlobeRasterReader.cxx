@@ -114,6 +114,36 @@ TIFF* OpenTIFF(const std::string& fileName, std::string*)
 }
 #endif
 
+/// A PROJ context that logs nothing, for libgeotiff's lookups in PROJ's database: with their
+/// default context, every miss on a corrupt file's codes went to stderr
+/// ("proj_create_from_database: crs not found", found by the fuzzer), out of an application's
+/// reach; the reader's own error says what failed.
+class QuietPROJContext
+{
+public:
+  QuietPROJContext()
+    : Context(proj_context_create())
+  {
+    if (this->Context)
+    {
+      proj_log_level(this->Context, PJ_LOG_NONE);
+    }
+  }
+  ~QuietPROJContext()
+  {
+    if (this->Context)
+    {
+      proj_context_destroy(this->Context);
+    }
+  }
+  QuietPROJContext(const QuietPROJContext&) = delete;
+  QuietPROJContext& operator=(const QuietPROJContext&) = delete;
+  PJ_CONTEXT* Get() const { return this->Context; }
+
+private:
+  PJ_CONTEXT* Context;
+};
+
 /// libgeotiff's errors (e.g. "Key 2054 of unknown type." for a corrupt key directory): kept, the
 /// first one, for the reason of a failure (GTIFNew printed them to stderr, where an application
 /// cannot see them, and said nothing else).
@@ -299,6 +329,14 @@ int IdentifyUserDefinedProjection(GTIF* gtif, int& confidence, std::string& name
     return 0; // no projection defined at all
   }
   int code = 0;
+  // A quiet PROJ context for libgeotiff's lookups (QuietPROJContext), detached afterwards.
+  QuietPROJContext quiet;
+  GTIFAttachPROJContext(gtif, quiet.Get());
+  struct Detach
+  {
+    GTIF* Gtif;
+    ~Detach() { GTIFAttachPROJContext(this->Gtif, nullptr); }
+  } detach{ gtif };
   GTIFDefn* defn = GTIFAllocDefn();
   if (defn && GTIFGetDefn(gtif, defn) && defn->Model == ModelTypeProjected)
   {
@@ -546,12 +584,12 @@ double DegreesPerAngularUnit(int code)
 }
 
 /// The name of an EPSG length unit ("metre", "foot", ...) from PROJ's database; "" if unknown.
-std::string LengthUnitName(int code)
+std::string LengthUnitName(const QuietPROJContext& context, int code)
 {
   char* name = nullptr;
   double metres = 0.0;
   std::string result;
-  if (code > 0 && GTIFGetUOMLengthInfo(code, &name, &metres) && name)
+  if (code > 0 && GTIFGetUOMLengthInfoEx(context.Get(), code, &name, &metres) && name)
   {
     result = name;
   }
@@ -570,15 +608,16 @@ struct EPSGClass
   std::string Units;
 };
 
-/// Looks `code` up, trying `expected` first (a lookup that misses can print a PROJ message).
+/// Looks `code` up, trying `expected` first.
 EPSGClass ClassifyEPSG(int code, int expected)
 {
   EPSGClass result;
+  const QuietPROJContext context;
   const auto geographic = [&]()
   {
     char* name = nullptr;
     short datum = 0, meridian = 0, angular = 0;
-    if (GTIFGetGCSInfo(code, &name, &datum, &meridian, &angular))
+    if (GTIFGetGCSInfoEx(context.Get(), code, &name, &datum, &meridian, &angular))
     {
       result.ModelType = vtkGlobeRasterReader::Geographic;
       result.Name = name ? name : "";
@@ -594,11 +633,11 @@ EPSGClass ClassifyEPSG(int code, int expected)
   {
     char* name = nullptr;
     short operation = 0, length = 0, gcs = 0;
-    if (GTIFGetPCSInfo(code, &name, &operation, &length, &gcs))
+    if (GTIFGetPCSInfoEx(context.Get(), code, &name, &operation, &length, &gcs))
     {
       result.ModelType = vtkGlobeRasterReader::Projected;
       result.Name = name ? name : "";
-      result.Units = LengthUnitName(length);
+      result.Units = LengthUnitName(context, length);
     }
     if (name)
     {
@@ -891,7 +930,7 @@ bool ReadGeoTIFF(const std::string& fileName, TIFFInfo& info, std::string& why)
     }
     if (state == KeyState::Read)
     {
-      geo.Units = LengthUnitName(code);
+      geo.Units = LengthUnitName(QuietPROJContext(), code);
     }
   }
 

@@ -37,6 +37,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <unistd.h>
 #include <utility>
 #include <vector>
 
@@ -491,6 +492,35 @@ int TestGlobeRasterReaderHardening(int, char*[])
     ExpectRefused("hardening_epsg60000.tif", f,
       { "EPSG:60000", "GeographicTypeGeoKey", "PROJ's database" },
       "GeographicTypeGeoKey 60000 (not an EPSG code)");
+    // A code below 32767 that PROJ's database lacks: libgeotiff's lookups printed
+    // "proj_create_from_database: crs not found" to stderr (found by Testing/Fuzz); the
+    // reader's error is the only message now.
+    f.Keys[2].Value = 1234;
+    const std::string captured = Temp + "/hardening_epsg1234.stderr";
+    std::fflush(stderr);
+    const int saved = dup(2);
+    FILE* sink = std::fopen(captured.c_str(), "w");
+    if (saved >= 0 && sink)
+    {
+      dup2(fileno(sink), 2);
+    }
+    ExpectRefused("hardening_epsg1234.tif", f, { "EPSG:1234", "GeographicTypeGeoKey" },
+      "GeographicTypeGeoKey 1234 (no such EPSG code)");
+    std::fflush(stderr);
+    if (saved >= 0)
+    {
+      dup2(saved, 2);
+      close(saved);
+    }
+    if (sink)
+    {
+      std::fclose(sink);
+    }
+    std::ifstream in(captured);
+    const std::string printed(
+      (std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    Expect(saved >= 0 && sink && printed.find("proj_") == std::string::npos,
+      "nothing from PROJ on stderr while it is read: '" + printed + "'");
     f = File();
     f.Scale[0] = f.Scale[1] = 1e-300;
     ExpectRefused("hardening_tiny_pixel.tif", f, { "pixel size", "1e-300" },
