@@ -9,6 +9,7 @@
 #include "vtkGlobeMapProjection.h"
 #include "vtkGlobePageCache.h"
 #include "vtkGlobePageSource.h"
+#include "vtkGlobePages.h"
 #include "vtkDoubleArray.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -848,98 +849,14 @@ std::string Sample(const Entry* e, const std::string& p, const std::string& uv)
   const bool height = e->Layer->GetRole() == vtkGlobeLayer::Height;
   const bool nearest = e->Layer->GetInterpolation() == vtkGlobeLayer::Nearest;
   return std::string("globe_pageGrad(") + (height ? "globePagesHeights" : "globePagesImages") +
-    ", " + p + "Table, " + p + "Levels, " + uv + ", dx, dy, " + (nearest ? "true" : "false") + ")";
+    ", " + p + "Table, " + p + "Pyramid, " + uv + ", dx, dy, " + (nearest ? "true" : "false") + ")";
 }
 
 // A layer's level-0 size in texels (GLSL vec2).
 std::string Size(const Entry* e, const std::string& p)
 {
-  return e->Streamed ? "texelFetch(" + p + "Table, ivec2(0), 0).xy"
-                     : "vec2(textureSize(" + p + ", 0))";
+  return e->Streamed ? p + "Pyramid.xy" : "vec2(textureSize(" + p + ", 0))";
 }
-
-// Page lookup of streamed layers (vtkGlobePageCache's table layout): row 0 of a table holds
-// each level's (width, height, first row, page columns); below, one texel per page: (slot,
-// level, column, row) of the page or of its finest resident ancestor.
-const char* const PageFunctions =
-  "uniform vec2 globePageGeometry;\n" // payload texels, border texels
-  // scale: atlas units per unit of uv in the page found (its own level's size).
-  "vec3 globe_pageCoord(sampler2D table, vec2 uv, vec2 size0, int level, out vec2 scale)\n"
-  "{\n"
-  "  float P = globePageGeometry.x;\n"
-  "  vec4 L = texelFetch(table, ivec2(level, 0), 0);\n"
-  // L.xy: texels per unit of uv (level 0's size / 2^level); the level's own height is its
-  // floor (OpenImageIO's max(1, n/2) chain).
-  "  vec2 count = vec2(L.w, ceil(max(1.0, floor(L.y)) / P));\n"
-  "  ivec2 page = ivec2(clamp(floor(uv * L.xy / P), vec2(0.0), count - 1.0));\n"
-  "  vec4 e = texelFetch(table, ivec2(page.x, int(L.z) + page.y), 0);\n"
-  "  vec2 size = size0 * exp2(-e.y);\n" // the page's level: level 0's size / 2^level
-  "  vec2 local = uv * size - e.zw * P;\n"
-  "  float T = P + 2.0 * globePageGeometry.y;\n"
-  "  scale = size / T;\n"
-  "  return vec3((local + globePageGeometry.y) / T, e.x);\n"
-  "}\n"
-  "float globe_pageAt(sampler2DArray atlas, vec3 c, vec2 offset, bool nearest)\n"
-  "{\n"
-  "  vec3 q = vec3(c.xy + offset, c.z);\n"
-  "  float T = globePageGeometry.x + 2.0 * globePageGeometry.y;\n"
-  "  return nearest ? texelFetch(atlas, ivec3(ivec2(floor(q.xy * T)), int(q.z)), 0).r\n"
-  "                 : textureLod(atlas, q, 0.0).r;\n"
-  "}\n"
-  // Heights at uv and one level-0 texel east, west, north and south of it (the gradient),
-  // with one page lookup per level: the neighbours lie in the same page or its border (two
-  // texels, at least one level-0 texel at every level).
-  "void globe_pageHeights(sampler2DArray atlas, sampler2D table, float levels, vec2 uv,\n"
-  "  vec2 dx, vec2 dy, bool nearest, out float v, out vec4 ewns)\n"
-  "{\n"
-  "  vec2 size = texelFetch(table, ivec2(0), 0).xy;\n"
-  "  float rho = max(length(dx * size), length(dy * size));\n"
-  "  float lod = clamp(log2(max(rho, 1e-30)), 0.0, levels - 1.0);\n"
-  "  int l = nearest ? int(floor(lod + 0.5)) : int(floor(lod));\n"
-  "  float f = nearest ? 0.0 : lod - float(l);\n"
-  "  vec2 scale;\n"
-  "  vec3 c = globe_pageCoord(table, uv, size, l, scale);\n"
-  "  vec2 s = scale / size;\n"
-  "  v = globe_pageAt(atlas, c, vec2(0.0), nearest);\n"
-  "  ewns = vec4(globe_pageAt(atlas, c, vec2(s.x, 0.0), nearest),\n"
-  "    globe_pageAt(atlas, c, vec2(-s.x, 0.0), nearest),\n"
-  "    globe_pageAt(atlas, c, vec2(0.0, -s.y), nearest),\n"
-  "    globe_pageAt(atlas, c, vec2(0.0, s.y), nearest));\n"
-  "  if (f > 0.0)\n"
-  "  {\n"
-  "    c = globe_pageCoord(table, uv, size, l + 1, scale);\n"
-  "    s = scale / size;\n"
-  "    v = mix(v, globe_pageAt(atlas, c, vec2(0.0), false), f);\n"
-  "    ewns = mix(ewns, vec4(globe_pageAt(atlas, c, vec2(s.x, 0.0), false),\n"
-  "      globe_pageAt(atlas, c, vec2(-s.x, 0.0), false),\n"
-  "      globe_pageAt(atlas, c, vec2(0.0, -s.y), false),\n"
-  "      globe_pageAt(atlas, c, vec2(0.0, s.y), false)), f);\n"
-  "  }\n"
-  "}\n"
-  // The level from the footprint as OpenGL chooses a mipmap level; linear: between two
-  // levels, nearest: the nearest level's nearest texel.
-  "vec4 globe_pageGrad(sampler2DArray atlas, sampler2D table, float levels, vec2 uv, vec2 dx,\n"
-  "  vec2 dy, bool nearest)\n"
-  "{\n"
-  "  vec2 size = texelFetch(table, ivec2(0), 0).xy;\n"
-  "  float rho = max(length(dx * size), length(dy * size));\n"
-  "  float lod = clamp(log2(max(rho, 1e-30)), 0.0, levels - 1.0);\n"
-  "  vec2 scale;\n"
-  "  if (nearest)\n"
-  "  {\n"
-  "    vec3 c = globe_pageCoord(table, uv, size, int(floor(lod + 0.5)), scale);\n"
-  "    float T = globePageGeometry.x + 2.0 * globePageGeometry.y;\n"
-  "    return texelFetch(atlas, ivec3(ivec2(floor(c.xy * T)), int(c.z)), 0);\n"
-  "  }\n"
-  "  int l = int(floor(lod));\n"
-  "  vec4 a = textureLod(atlas, globe_pageCoord(table, uv, size, l, scale), 0.0);\n"
-  "  float f = lod - float(l);\n"
-  "  if (f > 0.0)\n"
-  "  {\n"
-  "    a = mix(a, textureLod(atlas, globe_pageCoord(table, uv, size, l + 1, scale), 0.0), f);\n"
-  "  }\n"
-  "  return a;\n"
-  "}\n";
 
 void EmitResolveAverage(std::ostream& s, const char* target, const char* zero)
 {
@@ -1015,7 +932,7 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
   }
   if (streamed[0] || streamed[1])
   {
-    s << PageFunctions;
+    s << vtkGlobePages;
   }
   // Shared helpers: texture coordinates of a geographic layer, the coverage weight with its
   // feathered border, and Kooima's projection-quality weight.
@@ -1124,7 +1041,7 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
       if (list[i]->Streamed)
       {
         s << "uniform sampler2D " << p << "Table;\n"
-          << "uniform float " << p << "Levels;\n";
+          << "uniform vec4 " << p << "Pyramid;\n";
       }
       else
       {
@@ -1236,7 +1153,7 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
         {
           s << "    float v;\n    vec4 ewns;\n"
             << "    globe_pageHeights(globePagesHeights, " << p << "Table, " << p
-            << "Levels, uv, dx, dy, "
+            << "Pyramid, uv, dx, dy, "
             << (layer->GetInterpolation() == vtkGlobeLayer::Nearest ? "true" : "false")
             << ", v, ewns);\n"
             << "    float vE = ewns.x, vW = ewns.y, vN = ewns.z, vS = ewns.w;\n";
@@ -1567,9 +1484,10 @@ void vtkGlobeLayerSet::BindTextures(vtkShaderProgram* program, int roles)
   }
   if (streamed[0] || streamed[1])
   {
-    const float geometry[2] = { static_cast<float>(in.Pages->GetPageSize()),
-      static_cast<float>(vtkGlobePageCache::Border) };
-    program->SetUniform2f("globePageGeometry", geometry);
+    const float geometry[4] = { static_cast<float>(in.Pages->GetPageSize()),
+      static_cast<float>(vtkGlobePageCache::Border),
+      static_cast<float>(in.Pages->GetLevelBlend()), 0.0f };
+    program->SetUniform4f("globePageGeometry", geometry);
   }
   if (Included(vtkGlobeLayer::Height, roles))
   {
@@ -1605,8 +1523,11 @@ void vtkGlobeLayerSet::BindTextures(vtkShaderProgram* program, int roles)
         vtkTextureObject* table = in.Pages->GetTable(layer);
         table->Activate();
         program->SetUniformi((p + "Table").c_str(), table->GetTextureUnit());
-        program->SetUniformf(
-          (p + "Levels").c_str(), static_cast<float>(in.Pages->GetNumberOfLevels(layer)));
+        double pyramid[4];
+        in.Pages->GetPyramid(layer, pyramid);
+        const float values[4] = { static_cast<float>(pyramid[0]), static_cast<float>(pyramid[1]),
+          static_cast<float>(pyramid[2]), static_cast<float>(pyramid[3]) };
+        program->SetUniform4f((p + "Pyramid").c_str(), values);
       }
       else
       {

@@ -48,6 +48,15 @@ int KeyRow(PageKey k)
   return static_cast<int>(k & 0xFFFFFF);
 }
 
+// The first page-table row of a level, from level 0's page rows alone, so the shader computes
+// it (globe_pageCoord) instead of reading it: level l's region is at least
+// floor(rows0 / 2^l) + 2 rows high, which holds its pages whatever its size rounding
+// (ceil(rows0 / 2^l) at most). Exact in float as in double (small integers, powers of two).
+int FirstTableRow(int level, int rows0)
+{
+  return 2 * level + static_cast<int>(std::floor(2.0 * rows0 * (1.0 - std::ldexp(1.0, -level))));
+}
+
 // A page read by a worker, waiting for its upload.
 struct Finished
 {
@@ -596,7 +605,6 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
       in.Refuse(layer); // the page source reported why
       continue;
     }
-    int firstRow = 1;
     int size0[2];
     pages->GetLevelSize(0, size0);
     for (int l = 0; l < s.Levels; ++l)
@@ -607,11 +615,13 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
       s.Height.push_back(std::ldexp(static_cast<double>(size0[1]), -l));
       s.Columns.push_back(count[0]);
       s.Rows.push_back(count[1]);
-      s.FirstRow.push_back(firstRow);
-      firstRow += count[1];
     }
-    s.TableWidth = std::max(s.Levels, s.Columns[0]);
-    s.TableHeight = firstRow;
+    for (int l = 0; l <= s.Levels; ++l)
+    {
+      s.FirstRow.push_back(FirstTableRow(l, s.Rows[0]));
+    }
+    s.TableWidth = s.Columns[0];
+    s.TableHeight = s.FirstRow[s.Levels];
     vtkSmartPointer<vtkDataArray> coarsest;
     if (s.Kind == Heights)
     {
@@ -708,23 +718,24 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
       continue;
     }
     std::vector<float> table(static_cast<size_t>(s.TableWidth) * s.TableHeight * 4, -1.0f);
-    for (int l = 0; l < s.Levels; ++l)
-    {
-      float* t = &table[4 * static_cast<size_t>(l)];
-      t[0] = static_cast<float>(s.Width[l]);
-      t[1] = static_cast<float>(s.Height[l]);
-      t[2] = static_cast<float>(s.FirstRow[l]);
-      t[3] = static_cast<float>(s.Columns[l]);
-    }
     // Coarse to fine: a page that is not resident takes the entry of the page one level up
-    // that holds its centre.
+    // that holds its centre. A level's rows and columns beyond its pages repeat its last
+    // ones, so the shader clamps to the region, not to the level's own page counts.
     for (int l = s.Levels - 1; l >= 0; --l)
     {
-      for (int r = 0; r < s.Rows[l]; ++r)
+      for (int r = 0; r < s.FirstRow[l + 1] - s.FirstRow[l]; ++r)
       {
-        for (int c = 0; c < s.Columns[l]; ++c)
+        for (int c = 0; c < s.TableWidth; ++c)
         {
           float* t = &table[4 * (static_cast<size_t>(s.FirstRow[l] + r) * s.TableWidth + c)];
+          if (r >= s.Rows[l] || c >= s.Columns[l])
+          {
+            const float* edge = &table[4 *
+              (static_cast<size_t>(s.FirstRow[l] + std::min(r, s.Rows[l] - 1)) * s.TableWidth +
+                std::min(c, s.Columns[l] - 1))];
+            std::copy(edge, edge + 4, t);
+            continue;
+          }
           auto it = s.Resident.find(MakeKey(l, c, r));
           if (it != s.Resident.end())
           {
@@ -826,6 +837,16 @@ int vtkGlobePageCache::GetNumberOfLevels(vtkGlobeLayer* layer)
   return s ? s->Levels : 0;
 }
 
+bool vtkGlobePageCache::GetPyramid(vtkGlobeLayer* layer, double pyramid[4])
+{
+  LayerState* s = this->Internals->Find(layer);
+  pyramid[0] = s ? s->Width[0] : 0.0;
+  pyramid[1] = s ? s->Height[0] : 0.0;
+  pyramid[2] = s ? s->Levels : 0.0;
+  pyramid[3] = s ? s->Rows[0] : 0.0;
+  return s != nullptr;
+}
+
 int vtkGlobePageCache::GetNumberOfResidentPages()
 {
   int n = 0;
@@ -913,6 +934,7 @@ void vtkGlobePageCache::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GPUMemory: " << this->GPUMemory << " MiB per kind\n";
   os << indent << "CPUMemory: " << this->CPUMemory << " MiB per layer\n";
   os << indent << "UploadBudget: " << this->UploadBudget << " MiB per frame\n";
+  os << indent << "LevelBlend: " << this->LevelBlend << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "Slots: " << this->GetNumberOfSlots(Heights) << " height, "
      << this->GetNumberOfSlots(Images) << " image\n";

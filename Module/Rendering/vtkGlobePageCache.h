@@ -7,11 +7,11 @@
  * (vtkGlobePageSource). This cache holds the pages the frames show:
  * - one page atlas per data kind, a GL_TEXTURE_2D_ARRAY of (PageSize + 2 Border)^2 texels
  *   per slot: R32F for heights, RGBA8 for images; GPUMemory MiB each, fixed when allocated;
- * - one page table per layer (an RGBA32F texture): row 0 holds each level's (width, height,
- *   first table row, page columns); the rows below hold one texel per page of every level:
+ * - one page table per layer (an RGBA32F texture) with one texel per page of every level:
  *   (slot, level, column, row) of the page itself when it is resident, else of its finest
  *   resident ancestor, so a lookup never misses (the coarsest level, one page, is read
- *   synchronously when the layer is first seen and is never evicted);
+ *   synchronously when the layer is first seen and is never evicted); each level's first
+ *   row follows from level 0's page rows (GetPyramid), so a lookup reads one texel;
  * - Request() marks a page used by this frame; a page that is not resident is queued for
  *   the worker threads (coarse levels first), which read it with vtkGlobeLayer::ReadPage;
  * - BeginFrame() uploads finished pages through a pixel-buffer object, at most UploadBudget
@@ -84,6 +84,18 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Linear filtering of streamed layers blends the two levels around each sample's footprint
+   * over this part of a level (default 0.5): 1 is trilinear filtering, as OpenGL's
+   * LINEAR_MIPMAP_LINEAR; less reads one level alone where the footprint's level is within
+   * (1 - LevelBlend) / 2 of a whole level (half the samples at 0.5), which halves their
+   * reads, at the price of a sharper transition between levels; 0 takes the nearer level.
+   */
+  vtkSetClampMacro(LevelBlend, double, 0.0, 1.0);
+  vtkGetMacro(LevelBlend, double);
+  ///@}
+
+  ///@{
   /// Worker threads that read pages (default 2).
   vtkSetClampMacro(NumberOfThreads, int, 1, 64);
   vtkGetMacro(NumberOfThreads, int);
@@ -125,6 +137,13 @@ public:
   int GetNumberOfLevels(vtkGlobeLayer* layer);
   ///@}
 
+  /**
+   * What the shader needs besides a layer's table: level 0's size in texels, the number of
+   * levels and level 0's page rows (level l's table rows start at
+   * 2 l + floor(2 rows0 (1 - 2^-l))). False (zeros) for a layer the cache does not hold.
+   */
+  bool GetPyramid(vtkGlobeLayer* layer, double pyramid[4]);
+
   ///@{
   /// Statistics (cumulative unless said otherwise; ResetStatistics() zeroes them).
   /// Pages resident now (all kinds), slots of a kind's atlas.
@@ -161,6 +180,7 @@ protected:
   double GPUMemory = 120.0;
   double CPUMemory = 256.0;
   double UploadBudget = 16.0;
+  double LevelBlend = 0.5;
   int NumberOfThreads = 2;
 
   long long NumberOfRequestedPages = 0;

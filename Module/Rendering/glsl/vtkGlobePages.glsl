@@ -1,0 +1,130 @@
+// Reading streamed layers through their page tables (vtkGlobePageCache's layout; the design is
+// in Documentation/streaming.md). A layer's table holds one texel per page of every level:
+// (slot, level, column, row) of the page or of its finest resident ancestor, so a lookup never
+// misses. Level l's rows start at 2 l + floor(2 rows0 (1 - 2^-l)) (rows0: level 0's page
+// rows); rows and columns beyond a level's pages repeat its last ones. A layer's `pyramid`
+// uniform: level 0's width and height in texels, the number of levels, rows0.
+
+// x: payload texels per page side; y: border texels; z: the part of a level over which linear
+// filtering blends two levels (1: trilinear; less: one level alone away from the halfway lod,
+// vtkGlobePageCache::LevelBlend).
+uniform vec4 globePageGeometry;
+
+float globe_pageFirstRow(float level, float rows0)
+{
+  return 2.0 * level + floor(2.0 * rows0 * (1.0 - exp2(-level)));
+}
+
+// Atlas coordinates (x, y, slot) of uv at `level`, or at its finest resident ancestor;
+// scale: atlas units per unit of uv in the page found (its own level's size).
+vec3 globe_pageCoord(sampler2D table, vec4 pyramid, vec2 uv, int level, out vec2 scale)
+{
+  float P = globePageGeometry.x;
+  float l = float(level);
+  float first = globe_pageFirstRow(l, pyramid.w);
+  float rows = globe_pageFirstRow(l + 1.0, pyramid.w) - first;
+  // Texels per unit of uv at this level: level 0's size / 2^level.
+  vec2 page = clamp(floor(uv * pyramid.xy * exp2(-l) / P), vec2(0.0),
+    vec2(float(textureSize(table, 0).x), rows) - 1.0);
+  vec4 e = texelFetch(table, ivec2(page) + ivec2(0, int(first)), 0);
+  vec2 size = pyramid.xy * exp2(-e.y); // the page's level: level 0's size / 2^level
+  vec2 local = uv * size - e.zw * P;
+  float T = P + 2.0 * globePageGeometry.y;
+  scale = size / T;
+  return vec3((local + globePageGeometry.y) / T, e.x);
+}
+
+float globe_pageAt(sampler2DArray atlas, vec3 c, vec2 offset, bool nearest)
+{
+  vec3 q = vec3(c.xy + offset, c.z);
+  float T = globePageGeometry.x + 2.0 * globePageGeometry.y;
+  return nearest ? texelFetch(atlas, ivec3(ivec2(floor(q.xy * T)), int(q.z)), 0).r
+                 : textureLod(atlas, q, 0.0).r;
+}
+
+// The level of detail from the footprint, as OpenGL chooses a mipmap level: log2 of the larger
+// screen derivative in level-0 texels, within the pyramid.
+float globe_pageLod(vec4 pyramid, vec2 dx, vec2 dy)
+{
+  float rho = max(length(dx * pyramid.xy), length(dy * pyramid.xy));
+  return clamp(log2(max(rho, 1e-30)), 0.0, pyramid.z - 1.0);
+}
+
+// The weight of the coarser of the two levels around lod's fraction f: 0 or 1 away from the
+// halfway point, a linear ramp over the blend band around it (all of f with a band of 1).
+// Where the weight is 0 or 1 one level is read instead of two.
+float globe_pageBlend(float f)
+{
+  float band = max(globePageGeometry.z, 1e-6);
+  return clamp((f - 0.5) / band + 0.5, 0.0, 1.0);
+}
+
+// Heights at uv and one level-0 texel east, west, north and south of it (the gradient),
+// with one page lookup per level: the neighbours lie in the same page or its border (two
+// texels, at least one level-0 texel at every level).
+void globe_pageHeightsAt(sampler2DArray atlas, sampler2D table, vec4 pyramid, vec2 uv, int l,
+  bool nearest, out float v, out vec4 ewns)
+{
+  vec2 scale;
+  vec3 c = globe_pageCoord(table, pyramid, uv, l, scale);
+  vec2 s = scale / pyramid.xy;
+  v = globe_pageAt(atlas, c, vec2(0.0), nearest);
+  ewns = vec4(globe_pageAt(atlas, c, vec2(s.x, 0.0), nearest),
+    globe_pageAt(atlas, c, vec2(-s.x, 0.0), nearest),
+    globe_pageAt(atlas, c, vec2(0.0, -s.y), nearest),
+    globe_pageAt(atlas, c, vec2(0.0, s.y), nearest));
+}
+
+void globe_pageHeights(sampler2DArray atlas, sampler2D table, vec4 pyramid, vec2 uv,
+  vec2 dx, vec2 dy, bool nearest, out float v, out vec4 ewns)
+{
+  float lod = globe_pageLod(pyramid, dx, dy);
+  if (nearest)
+  {
+    globe_pageHeightsAt(atlas, table, pyramid, uv, int(floor(lod + 0.5)), true, v, ewns);
+    return;
+  }
+  int l = int(floor(lod));
+  float f = globe_pageBlend(lod - float(l));
+  v = 0.0;
+  ewns = vec4(0.0);
+  if (f < 1.0)
+  {
+    globe_pageHeightsAt(atlas, table, pyramid, uv, l, false, v, ewns);
+  }
+  if (f > 0.0)
+  {
+    float v1;
+    vec4 ewns1;
+    globe_pageHeightsAt(atlas, table, pyramid, uv, l + 1, false, v1, ewns1);
+    v = mix(v, v1, f);
+    ewns = mix(ewns, ewns1, f);
+  }
+}
+
+// A streamed layer's filtered value at uv. Linear: between two levels around the footprint's
+// (globe_pageBlend); nearest: the nearest level's nearest texel.
+vec4 globe_pageGrad(sampler2DArray atlas, sampler2D table, vec4 pyramid, vec2 uv, vec2 dx,
+  vec2 dy, bool nearest)
+{
+  float lod = globe_pageLod(pyramid, dx, dy);
+  vec2 scale;
+  if (nearest)
+  {
+    vec3 c = globe_pageCoord(table, pyramid, uv, int(floor(lod + 0.5)), scale);
+    float T = globePageGeometry.x + 2.0 * globePageGeometry.y;
+    return texelFetch(atlas, ivec3(ivec2(floor(c.xy * T)), int(c.z)), 0);
+  }
+  int l = int(floor(lod));
+  float f = globe_pageBlend(lod - float(l));
+  vec4 a = vec4(0.0);
+  if (f < 1.0)
+  {
+    a = textureLod(atlas, globe_pageCoord(table, pyramid, uv, l, scale), 0.0);
+  }
+  if (f > 0.0)
+  {
+    a = mix(a, textureLod(atlas, globe_pageCoord(table, pyramid, uv, l + 1, scale), 0.0), f);
+  }
+  return a;
+}
