@@ -1484,10 +1484,9 @@ void vtkGlobeLayerSet::BindTextures(vtkShaderProgram* program, int roles)
   }
   if (streamed[0] || streamed[1])
   {
-    const float geometry[4] = { static_cast<float>(in.Pages->GetPageSize()),
-      static_cast<float>(vtkGlobePageCache::Border),
-      static_cast<float>(in.Pages->GetLevelBlend()), 0.0f };
-    program->SetUniform4f("globePageGeometry", geometry);
+    const float geometry[2] = { static_cast<float>(in.Pages->GetPageSize()),
+      static_cast<float>(vtkGlobePageCache::Border) };
+    program->SetUniform2f("globePageGeometry", geometry);
   }
   if (Included(vtkGlobeLayer::Height, roles))
   {

@@ -934,7 +934,6 @@ void vtkGlobePageCache::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GPUMemory: " << this->GPUMemory << " MiB per kind\n";
   os << indent << "CPUMemory: " << this->CPUMemory << " MiB per layer\n";
   os << indent << "UploadBudget: " << this->UploadBudget << " MiB per frame\n";
-  os << indent << "LevelBlend: " << this->LevelBlend << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "Slots: " << this->GetNumberOfSlots(Heights) << " height, "
      << this->GetNumberOfSlots(Images) << " image\n";

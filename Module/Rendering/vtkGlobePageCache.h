@@ -84,18 +84,6 @@ public:
   ///@}
 
   ///@{
-  /**
-   * Linear filtering of streamed layers blends the two levels around each sample's footprint
-   * over this part of a level (default 0.5): 1 is trilinear filtering, as OpenGL's
-   * LINEAR_MIPMAP_LINEAR; less reads one level alone where the footprint's level is within
-   * (1 - LevelBlend) / 2 of a whole level (half the samples at 0.5), which halves their
-   * reads, at the price of a sharper transition between levels; 0 takes the nearer level.
-   */
-  vtkSetClampMacro(LevelBlend, double, 0.0, 1.0);
-  vtkGetMacro(LevelBlend, double);
-  ///@}
-
-  ///@{
   /// Worker threads that read pages (default 2).
   vtkSetClampMacro(NumberOfThreads, int, 1, 64);
   vtkGetMacro(NumberOfThreads, int);
@@ -180,7 +168,6 @@ protected:
   double GPUMemory = 120.0;
   double CPUMemory = 256.0;
   double UploadBudget = 16.0;
-  double LevelBlend = 0.5;
   int NumberOfThreads = 2;
 
   long long NumberOfRequestedPages = 0;

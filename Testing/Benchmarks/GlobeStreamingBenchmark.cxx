@@ -9,7 +9,7 @@
 //
 //   GlobeStreamingBenchmark --data DATA_DIR --planet WIDTH:HEIGHTS.tif:IMAGERY.tif ...
 //       [--frames 240] [--window 640x480] [--grid 256] [--gpu 120] [--incore-max 8192]
-//       [--level-blend B] [--interleaved-only] [--json PATH]
+//       [--interleaved-only] [--json PATH]
 //
 // Per block of 10 frames: median frame time (Render + glFinish, wall clock); the camera's
 // height at the block's last frame; pages loaded and evicted and bytes uploaded in the block;
@@ -60,9 +60,6 @@ struct Block
   long long Loaded = 0, Evicted = 0, Uploaded = 0;
   double RSS = 0, GPU = 0, Resident = 0, Error = -1;
 };
-
-// --level-blend: vtkGlobePageCache::LevelBlend of the streamed runs (negative: its default).
-double LevelBlend = -1.0;
 
 // The OpenGL renderer, read while a context is current.
 std::string Renderer = "unknown";
@@ -147,10 +144,6 @@ Run Fly(const std::string& data, const Planet& planet, bool streamed, int frames
   vtkGlobeTest::Scene scene(w, h, grid);
   vtkGlobeMapper* mapper = scene.Mapper;
   mapper->GetPageCache()->SetGPUMemory(gpu);
-  if (LevelBlend >= 0.0)
-  {
-    mapper->GetPageCache()->SetLevelBlend(LevelBlend);
-  }
   AddLayers(mapper, data, planet, streamed);
   vtkRenderWindow* window = scene.Window;
   vtkGlobePageCache* cache = mapper->GetPageCache();
@@ -224,10 +217,6 @@ Paired FlyPaired(const std::string& data, const Planet& planet, int frames, int 
 {
   vtkGlobeTest::Scene streamed(w, h, grid), incore(w, h, grid);
   streamed.Mapper->GetPageCache()->SetGPUMemory(gpu);
-  if (LevelBlend >= 0.0)
-  {
-    streamed.Mapper->GetPageCache()->SetLevelBlend(LevelBlend);
-  }
   AddLayers(streamed.Mapper, data, planet, true);
   AddLayers(incore.Mapper, data, planet, false);
   std::vector<double> a, b, ca, cb;
@@ -311,10 +300,6 @@ int main(int argc, char* argv[])
     {
       incoreMax = std::atoi(next().c_str());
     }
-    else if (arg == "--level-blend")
-    {
-      LevelBlend = std::atof(next().c_str());
-    }
     else if (arg == "--interleaved-only")
     {
       interleavedOnly = true;
@@ -327,7 +312,7 @@ int main(int argc, char* argv[])
     {
       std::fprintf(stderr,
         "usage: GlobeStreamingBenchmark --data DIR --planet WIDTH:HEIGHTS:IMAGERY ... [--frames N] "
-        "[--window WxH] [--grid N] [--gpu MiB] [--incore-max W] [--level-blend B] [--interleaved-only] [--json PATH]\n");
+        "[--window WxH] [--grid N] [--gpu MiB] [--incore-max W] [--interleaved-only] [--json PATH]\n");
       return 2;
     }
   }

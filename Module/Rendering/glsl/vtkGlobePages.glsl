@@ -5,10 +5,8 @@
 // rows); rows and columns beyond a level's pages repeat its last ones. A layer's `pyramid`
 // uniform: level 0's width and height in texels, the number of levels, rows0.
 
-// x: payload texels per page side; y: border texels; z: the part of a level over which linear
-// filtering blends two levels (1: trilinear; less: one level alone away from the halfway lod,
-// vtkGlobePageCache::LevelBlend).
-uniform vec4 globePageGeometry;
+// x: payload texels per page side; y: border texels.
+uniform vec2 globePageGeometry;
 
 float globe_pageFirstRow(float level, float rows0)
 {
@@ -50,15 +48,6 @@ float globe_pageLod(vec4 pyramid, vec2 dx, vec2 dy)
   return clamp(log2(max(rho, 1e-30)), 0.0, pyramid.z - 1.0);
 }
 
-// The weight of the coarser of the two levels around lod's fraction f: 0 or 1 away from the
-// halfway point, a linear ramp over the blend band around it (all of f with a band of 1).
-// Where the weight is 0 or 1 one level is read instead of two.
-float globe_pageBlend(float f)
-{
-  float band = max(globePageGeometry.z, 1e-6);
-  return clamp((f - 0.5) / band + 0.5, 0.0, 1.0);
-}
-
 // Heights at uv and one level-0 texel east, west, north and south of it (the gradient),
 // with one page lookup per level: the neighbours lie in the same page or its border (two
 // texels, at least one level-0 texel at every level).
@@ -85,13 +74,8 @@ void globe_pageHeights(sampler2DArray atlas, sampler2D table, vec4 pyramid, vec2
     return;
   }
   int l = int(floor(lod));
-  float f = globe_pageBlend(lod - float(l));
-  v = 0.0;
-  ewns = vec4(0.0);
-  if (f < 1.0)
-  {
-    globe_pageHeightsAt(atlas, table, pyramid, uv, l, false, v, ewns);
-  }
+  float f = lod - float(l);
+  globe_pageHeightsAt(atlas, table, pyramid, uv, l, false, v, ewns);
   if (f > 0.0)
   {
     float v1;
@@ -102,8 +86,8 @@ void globe_pageHeights(sampler2DArray atlas, sampler2D table, vec4 pyramid, vec2
   }
 }
 
-// A streamed layer's filtered value at uv. Linear: between two levels around the footprint's
-// (globe_pageBlend); nearest: the nearest level's nearest texel.
+// A streamed layer's filtered value at uv. Linear: between the two levels around the
+// footprint's, as OpenGL's LINEAR_MIPMAP_LINEAR; nearest: the nearest level's nearest texel.
 vec4 globe_pageGrad(sampler2DArray atlas, sampler2D table, vec4 pyramid, vec2 uv, vec2 dx,
   vec2 dy, bool nearest)
 {
@@ -116,12 +100,8 @@ vec4 globe_pageGrad(sampler2DArray atlas, sampler2D table, vec4 pyramid, vec2 uv
     return texelFetch(atlas, ivec3(ivec2(floor(c.xy * T)), int(c.z)), 0);
   }
   int l = int(floor(lod));
-  float f = globe_pageBlend(lod - float(l));
-  vec4 a = vec4(0.0);
-  if (f < 1.0)
-  {
-    a = textureLod(atlas, globe_pageCoord(table, pyramid, uv, l, scale), 0.0);
-  }
+  float f = lod - float(l);
+  vec4 a = textureLod(atlas, globe_pageCoord(table, pyramid, uv, l, scale), 0.0);
   if (f > 0.0)
   {
     a = mix(a, textureLod(atlas, globe_pageCoord(table, pyramid, uv, l + 1, scale), 0.0), f);
