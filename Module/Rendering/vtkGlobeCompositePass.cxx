@@ -14,6 +14,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
+#include "vtkScalarsToColors.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
@@ -23,6 +24,8 @@
 #include "vtkGlobeLines.h"
 
 #include <array>
+#include <cmath>
+#include <vector>
 
 vtkStandardNewMacro(vtkGlobeCompositePass);
 
@@ -36,6 +39,11 @@ vtkGlobeCompositePass::~vtkGlobeCompositePass()
   this->SetGBuffer(nullptr, nullptr);
   this->SetEllipsoid(nullptr);
   this->SetLayers(nullptr);
+  this->SetHeightColors(nullptr);
+  if (this->HeightColorTexture)
+  {
+    this->HeightColorTexture->Delete();
+  }
   delete this->Quad;
   delete this->Timer;
 }
@@ -76,8 +84,72 @@ void vtkGlobeCompositePass::SetLayers(vtkGlobeLayerSet* layers)
   Assign(this->Layers, layers);
 }
 
-void vtkGlobeCompositePass::ReleaseGraphicsResources(vtkWindow*)
+void vtkGlobeCompositePass::SetHeightColors(vtkScalarsToColors* colors)
 {
+  if (colors != this->HeightColors)
+  {
+    Assign(this->HeightColors, colors);
+    this->HeightColorTime = 0;
+    this->Modified();
+  }
+}
+
+namespace
+{
+constexpr int HeightColorEntries = 1024;
+}
+
+void vtkGlobeCompositePass::UpdateHeightColorTexture(vtkOpenGLRenderWindow* window)
+{
+  if (!this->HeightColorTexture)
+  {
+    this->HeightColorTexture = vtkTextureObject::New();
+  }
+  vtkTextureObject* t = this->HeightColorTexture;
+  if (t->GetHandle() && t->GetContext() == window &&
+    this->HeightColorTime >= this->HeightColors->GetMTime())
+  {
+    return;
+  }
+  const double* range = this->HeightColors->GetRange();
+  double lo = range[0], hi = range[1];
+  if (!std::isfinite(lo) || !std::isfinite(hi))
+  {
+    vtkErrorMacro(<< "The height colour map's range (" << lo << ", " << hi
+                  << ") is not finite; heights are coloured over [0, 1] m");
+    lo = 0.0;
+    hi = 1.0;
+  }
+  hi = hi > lo ? hi : lo + 1.0;
+  std::vector<float> rgba(4 * HeightColorEntries);
+  for (int i = 0; i < HeightColorEntries; ++i)
+  {
+    const double v = lo + (hi - lo) * i / (HeightColorEntries - 1);
+    double rgb[3];
+    this->HeightColors->GetColor(v, rgb);
+    for (int c = 0; c < 3; ++c)
+    {
+      rgba[4 * i + c] = static_cast<float>(rgb[c]);
+    }
+    rgba[4 * i + 3] = static_cast<float>(this->HeightColors->GetOpacity(v));
+  }
+  t->SetContext(window);
+  t->SetMinificationFilter(vtkTextureObject::Linear);
+  t->SetMagnificationFilter(vtkTextureObject::Linear);
+  t->SetWrapS(vtkTextureObject::ClampToEdge);
+  t->SetWrapT(vtkTextureObject::ClampToEdge);
+  t->Create2DFromRaw(HeightColorEntries, 1, 4, VTK_FLOAT, rgba.data());
+  this->HeightColorRange[0] = lo;
+  this->HeightColorRange[1] = hi;
+  this->HeightColorTime = this->HeightColors->GetMTime();
+}
+
+void vtkGlobeCompositePass::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (this->HeightColorTexture)
+  {
+    this->HeightColorTexture->ReleaseGraphicsResources(window);
+  }
   delete this->Quad;
   this->Quad = nullptr;
   this->ShaderKey.clear();
@@ -195,11 +267,28 @@ void vtkGlobeCompositePass::Render(const vtkRenderState* s)
       .data());
   p->SetUniform3f("globeGraticuleColor", f3(this->GraticuleColor).data());
   p->SetUniform3f("globeContourColor", f3(this->ContourColor).data());
+  if (this->HeightColors)
+  {
+    this->UpdateHeightColorTexture(window);
+    this->HeightColorTexture->Activate();
+    p->SetUniformi("globeHeightColors", this->HeightColorTexture->GetTextureUnit());
+    // Height -> texture coordinate: the range's ends at the first and last texel centres.
+    const double n = HeightColorEntries;
+    const double scale = (n - 1.0) / n / (this->HeightColorRange[1] - this->HeightColorRange[0]);
+    const float map[3] = { static_cast<float>(scale),
+      static_cast<float>(0.5 / n - this->HeightColorRange[0] * scale),
+      static_cast<float>(this->HeightColorOpacity) };
+    p->SetUniform3f("globeHeightColorMap", map);
+  }
   this->Layers->BindTextures(p, this->GetRoles());
 
   this->Quad->Render();
 
   this->Layers->UnbindTextures(this->GetRoles());
+  if (this->HeightColors)
+  {
+    this->HeightColorTexture->Deactivate();
+  }
   this->Depth->Deactivate();
   this->GBuffer->Deactivate();
   this->Timer->ReusableStop();
@@ -239,6 +328,7 @@ std::string vtkGlobeCompositePass::GetShaderKey()
   }
   const int roles = this->GetRoles();
   std::string key = this->Layers->GetShaderKey(roles) + "|";
+  key += this->HeightColors ? "H" : "";
   key += this->Lighting ? "L" : "";
   key += (roles >> vtkGlobeLayer::NightLights) & 1 ? "N" : "";
   key += (roles >> vtkGlobeLayer::Mask) & 1 ? "S" : "";
@@ -266,6 +356,14 @@ std::string vtkGlobeCompositePass::BuildFragmentShader()
   if (colors)
   {
     sample += "  albedo = globe_composeColor(lonHi, lonLo, latHi, latLo, albedo);\n";
+  }
+  if (has('H'))
+  {
+    // globeHeightColorMap: height -> texture coordinate (scale, offset), opacity.
+    functions += "uniform sampler2D globeHeightColors;\nuniform vec3 globeHeightColorMap;\n";
+    sample += "  vec4 tint = texture(globeHeightColors,\n"
+              "    vec2(h * globeHeightColorMap.x + globeHeightColorMap.y, 0.5));\n"
+              "  albedo = mix(albedo, tint.rgb, tint.a * globeHeightColorMap.z);\n";
   }
   if (normalMaps)
   {
@@ -363,6 +461,8 @@ void vtkGlobeCompositePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LightDirection: " << this->LightDirection[0] << ", " << this->LightDirection[1]
      << ", " << this->LightDirection[2] << "\n";
   os << indent << "Ambient: " << this->Ambient << "\n";
+  os << indent << "HeightColors: " << this->HeightColors << " (opacity "
+     << this->HeightColorOpacity << ")\n";
   os << indent << "Effects: " << (this->Lighting ? "Lighting " : "")
      << (this->NightLights ? "NightLights " : "") << (this->SpecularWater ? "SpecularWater " : "")
      << (this->Atmosphere ? "Atmosphere " : "") << (this->Graticule ? "Graticule " : "")

@@ -10,6 +10,7 @@
  * each other correctly.
  *
  * Effects, each present in the shader only when enabled (and when the layers it needs exist):
+ * HeightColors (a colour map of the composed height over the colour layers),
  * Lighting (diffuse, the first light of the scene), NightLights (NightLights layers on the
  * dark side), SpecularWater (Blinn-Phong where Mask layers say water), Atmosphere (single
  * scattering, seen from space and from the ground: the sky around the limb and the haze over
@@ -29,7 +30,9 @@
 class vtkGlobeEllipsoid;
 class vtkGlobeLayerSet;
 class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
 class vtkOpenGLRenderTimer;
+class vtkScalarsToColors;
 class vtkTextureObject;
 
 class VTKGLOBERENDERING_EXPORT vtkGlobeCompositePass : public vtkOpenGLRenderPass
@@ -107,6 +110,22 @@ public:
   vtkGetMacro(LineWidth, double);
   ///@}
 
+  ///@{
+  /**
+   * Heights in colour: any vtkScalarsToColors (a vtkColorTransferFunction hypsometric tint,
+   * a vtkLookupTable, ...) colours the terrain by its composed height (metres above the
+   * ellipsoid, as the height layers compose it for the terrain) over the colour layers, with
+   * the map's opacity times HeightColorOpacity (default 1: the tint replaces them); with
+   * Lighting on it is hill-shaded like any colour, so a DEM alone reads like a relief map.
+   * The map is sampled at 1024 heights over its GetRange() whenever it changes; heights
+   * outside the range take the end colours. nullptr (the default) leaves it out of the shader.
+   */
+  void SetHeightColors(vtkScalarsToColors* colors);
+  vtkGetObjectMacro(HeightColors, vtkScalarsToColors);
+  vtkSetClampMacro(HeightColorOpacity, double, 0.0, 1.0);
+  vtkGetMacro(HeightColorOpacity, double);
+  ///@}
+
   /**
    * The view of this frame (the mapper sets it): the eye in the body frame (m) and the
    * 16 elements (row-major) of the matrix from clip coordinates to eye-relative body
@@ -151,6 +170,12 @@ protected:
   double ContourInterval = 100.0;
   double ContourColor[3] = { 0.35, 0.2, 0.05 };
   double LineWidth = 1.5;
+  vtkScalarsToColors* HeightColors = nullptr;
+  double HeightColorOpacity = 1.0;
+  // The map sampled for the shader, and the map's MTime and range when it was.
+  vtkTextureObject* HeightColorTexture = nullptr;
+  vtkMTimeType HeightColorTime = 0;
+  double HeightColorRange[2] = { 0.0, 1.0 };
   double Eye[3] = { 0, 0, 0 };
   double ClipToEye[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
 
@@ -163,6 +188,7 @@ protected:
 private:
   std::string BuildFragmentShader();
   int GetRoles();
+  void UpdateHeightColorTexture(vtkOpenGLRenderWindow* window);
   vtkGlobeCompositePass(const vtkGlobeCompositePass&) = delete;
   void operator=(const vtkGlobeCompositePass&) = delete;
 };

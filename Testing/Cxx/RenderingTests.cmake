@@ -49,6 +49,9 @@ list(APPEND globe_rendering_tests
 # Cost (issue 19): layers out of the view are culled, without changing a pixel.
 list(APPEND globe_rendering_tests
   TestGlobeLayerCulling.cxx)
+# Pictures (issue 14): heights coloured by any vtkScalarsToColors.
+list(APPEND globe_rendering_tests
+  TestGlobeHeightColors.cxx)
 # Reliability (issue 16): extreme heights, layers removed while loading, failures reported
 # once, cameras that see nothing reported once.
 list(APPEND globe_rendering_tests
