@@ -625,6 +625,11 @@ int vtkGlobeLayerSet::GetNumberOfActiveHeightLayers()
   return this->GetNumberOfActiveLayers(vtkGlobeLayer::Height);
 }
 
+int vtkGlobeLayerSet::GetNumberOfActiveColorLayers()
+{
+  return this->GetNumberOfActiveLayers(vtkGlobeLayer::Color);
+}
+
 int vtkGlobeLayerSet::GetNumberOfActiveLayers(int role)
 {
   if (role < 0 || role >= NumberOfRoles)

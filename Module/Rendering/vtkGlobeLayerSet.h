@@ -89,7 +89,7 @@ public:
   int GetNumberOfActiveHeightLayers();
   /// Active layers of one role (vtkGlobeLayer::Roles).
   int GetNumberOfActiveLayers(int role);
-  int GetNumberOfActiveColorLayers() { return this->GetNumberOfActiveLayers(1); }
+  int GetNumberOfActiveColorLayers();
   ///@}
 
   /**
