@@ -61,6 +61,10 @@ list(APPEND globe_rendering_tests
 # need), and a raster many times the caches with bounded RSS.
 list(APPEND globe_rendering_tests
   TestGlobeStreaming.cxx)
+# Interaction (issue 13): vtkGlobeInteractorStyle driven by vtkInteractorEventRecorder on the
+# Earth (the stream in Testing/Data/Events), the Moon and a triaxial body.
+list(APPEND globe_rendering_tests
+  TestGlobeInteractorStyle.cxx)
 
 create_test_sourcelist(_globe_rendering_driver_sources GlobeRenderingCxxTests.cxx
   ${globe_rendering_tests}
@@ -68,7 +72,7 @@ create_test_sourcelist(_globe_rendering_driver_sources GlobeRenderingCxxTests.cx
 add_executable(GlobeRenderingCxxTests ${_globe_rendering_driver_sources})
 target_link_libraries(GlobeRenderingCxxTests PRIVATE
   GlobeTestSupport VTKGlobe::Rendering VTK::RenderingCore VTK::RenderingOpenGL2
-  VTK::TestingRendering VTK::FiltersSources VTK::IOImage VTK::InteractionStyle VTK::opengl
+  VTK::TestingRendering VTK::FiltersSources VTK::IOImage VTK::InteractionStyle VTK::RenderingUI VTK::opengl
   VTK::ImagingCore PROJ::proj)
 vtk_module_autoinit(TARGETS GlobeRenderingCxxTests
   MODULES VTK::RenderingOpenGL2 VTK::InteractionStyle)
