@@ -6,14 +6,16 @@
 //              [--grid N] [--interactive]
 //
 // Without --interactive it renders each viewpoint offscreen and writes PNG files (no display
-// needed); with it, it opens a window (press 1/2/3 for the viewpoints, q to quit).
+// needed); with it, it opens a window navigated by vtkGlobeInteractorStyle (drag the ground,
+// wheel to zoom toward the cursor, Ctrl+drag to tilt and turn; n north up, u look down, r the
+// whole Earth; 1/2/3 for the viewpoints, q to quit).
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkGlobeEllipsoid.h"
+#include "vtkGlobeInteractorStyle.h"
 #include "vtkGlobeLayer.h"
 #include "vtkGlobeMapper.h"
-#include "vtkInteractorStyleTrackballCamera.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
@@ -192,7 +194,8 @@ int main(int argc, char* argv[])
     PlaceCamera(renderer, wgs84, Viewpoints[0]);
     PlaceSun(sun, wgs84, Viewpoints[0]);
     vtkNew<vtkRenderWindowInteractor> interactor;
-    vtkNew<vtkInteractorStyleTrackballCamera> style;
+    vtkNew<vtkGlobeInteractorStyle> style;
+    style->SetMapper(mapper);
     interactor->SetInteractorStyle(style);
     interactor->SetRenderWindow(window);
     struct Context
