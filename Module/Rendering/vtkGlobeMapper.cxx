@@ -228,9 +228,20 @@ void vtkGlobeMapper::SetGridResolution(int resolution)
 {
   // Above 2048 the index buffer alone would take more than 100 MB.
   resolution = std::max(2, std::min(resolution, 2048));
-  if (resolution != this->Internals->GridPass->GetResolution())
+  if (resolution != this->Internals->GridPass->GetResolution() || this->GridPixelsPerCell != 0.0)
   {
     this->Internals->GridPass->SetResolution(resolution);
+    this->GridPixelsPerCell = 0.0;
+    this->Modified();
+  }
+}
+
+void vtkGlobeMapper::SetGridPixelsPerCell(double pixels)
+{
+  pixels = std::isfinite(pixels) ? std::max(0.0, std::min(pixels, 1e4)) : 0.0;
+  if (pixels != this->GridPixelsPerCell)
+  {
+    this->GridPixelsPerCell = pixels;
     this->Modified();
   }
 }
@@ -673,6 +684,12 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   if (width <= 0 || height <= 0)
   {
     return;
+  }
+  if (this->GridPixelsPerCell > 0.0)
+  {
+    // The grid follows the viewport (not Modified(): a window resize rebuilds nothing else).
+    const double points = std::ceil(std::max(width, height) / this->GridPixelsPerCell);
+    in.GridPass->SetResolution(static_cast<int>(std::max(2.0, std::min(points, 2048.0))));
   }
 
   this->CollectReduction();
@@ -1163,7 +1180,9 @@ void vtkGlobeMapper::PrintSelf(ostream& os, vtkIndent indent)
   auto& in = *this->Internals;
   os << indent << "Ellipsoid: " << (in.Ellipsoid->GetName() ? in.Ellipsoid->GetName() : "custom")
      << "\n";
-  os << indent << "GridResolution: " << this->GetGridResolution() << "\n";
+  os << indent << "GridResolution: " << this->GetGridResolution() << " ("
+     << (this->GridPixelsPerCell > 0.0 ? "following the window" : "fixed") << ")\n";
+  os << indent << "GridPixelsPerCell: " << this->GridPixelsPerCell << "\n";
   os << indent << "Layers: " << in.Layers->GetNumberOfLayers() << "\n";
   os << indent << "HighPrecisionGeodetic: " << this->GetHighPrecisionGeodetic() << "\n";
   os << indent << "WaitForPages: " << this->WaitForPages << "\n";

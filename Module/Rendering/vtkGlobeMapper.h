@@ -17,7 +17,8 @@
  *  1. CPU, in double: the eye in the body frame, the reference spheres and the sampling camera
  *     (vtkGlobeProjectiveGrid); the primary sphere is the lowest terrain seen in the previous
  *     frame (GPU min reduction), or the lowest data after a jump and on the first frame;
- *  2. vtkGlobeGridPass: PGM and height composition on a GridResolution^2 grid;
+ *  2. vtkGlobeGridPass: PGM and height composition on a GridResolution^2 grid (by default
+ *     about GridPixelsPerCell pixels per cell of the window);
  *  3. rasterization of the grid as an eye-relative mesh into a G-buffer (direction as an offset
  *     from the frame's local origin, height, depth);
  *  4. vtkGlobeCompositePass: per-pixel composition of the colour layers and lighting, written
@@ -93,10 +94,20 @@ public:
   ///@}
 
   ///@{
-  /// Grid points per side of the projective grid (default 512), clamped to 2..2048 like
-  /// vtkGlobeGridPass's Resolution, which it sets.
+  /**
+   * The projective grid's size, the accuracy/time dial (Documentation/accuracy-vs-time.md).
+   * By default it follows the window: ceil(L / GridPixelsPerCell) points per side, L the
+   * viewport's larger side in pixels (default 1.6: 500^2 at 800 x 600, 250^2 at 400 x 300,
+   * 1000^2 at 1600 x 1200), clamped to 2..2048, so the grid's error in pixels and its cost per
+   * pixel stay the same in any window. SetGridResolution fixes the size instead (points per
+   * side, clamped to 2..2048; GridPixelsPerCell becomes 0); SetGridPixelsPerCell(p > 0) makes
+   * it follow the window again. GetGridResolution is the size in use: the last frame's, or
+   * before the first frame the fixed size (512 unless set).
+   */
   void SetGridResolution(int resolution);
   int GetGridResolution();
+  void SetGridPixelsPerCell(double pixels);
+  vtkGetMacro(GridPixelsPerCell, double);
   ///@}
 
   ///@{
@@ -233,6 +244,8 @@ public:
 protected:
   vtkGlobeMapper();
   ~vtkGlobeMapper() override;
+
+  double GridPixelsPerCell = 1.6; // 0: the fixed GridResolution
 
   bool RenderGBuffer(vtkRenderer* ren, vtkActor* act, int width, int height);
   void ReduceMinimumRadius(vtkRenderer* ren, int width, int height, const double eye[3]);

@@ -132,5 +132,43 @@ int TestGlobeGridPass(int, char*[])
     ok &= flagError.Check(0.0);
   }
   std::printf("%s\n", ok ? "GPU grid matches the double reference" : "FAILED");
+
+  // By default the grid follows the viewport (ceil(larger side / 1.6) points per side); a
+  // fixed resolution stays fixed whatever the window; SetGridPixelsPerCell follows it again.
+  {
+    vtkNew<vtkGlobeMapper> automatic;
+    automatic->SetEllipsoid(wgs84);
+    const bool defaults = automatic->GetGridPixelsPerCell() == 1.6 && automatic->GetGridResolution() == 512;
+    std::printf("default: %g pixels per cell, %d before the first frame\n",
+      automatic->GetGridPixelsPerCell(), automatic->GetGridResolution());
+    ok &= defaults;
+    vtkNew<vtkActor> globe;
+    globe->SetMapper(automatic);
+    vtkNew<vtkRenderer> r;
+    r->AddActor(globe);
+    vtkNew<vtkRenderWindow> w;
+    w->SetOffScreenRendering(1);
+    w->AddRenderer(r);
+    const double camera[3] = { -40, 25, 2.2e7 }, target[3] = { -40, 25, 0 };
+    vtkGlobeTest::LookAt(r, wgs84, camera, target, 30);
+    auto frame = [&](int width, int height, int expected, const char* what) {
+      w->SetSize(width, height);
+      r->ResetCameraClippingRange();
+      w->Render();
+      const bool good = automatic->GetGridResolution() == expected && automatic->GetLastFrameDrewGlobe();
+      std::printf("%s, %d x %d: grid %d (expected %d)%s\n", what, width, height,
+        automatic->GetGridResolution(), expected, good ? "" : " FAILED");
+      ok &= good;
+    };
+    frame(400, 300, 250, "following the window");
+    frame(800, 600, 500, "following the window");
+    frame(300, 500, 313, "following the window (portrait)");
+    frame(2, 2, 2, "following the window (clamped)");
+    automatic->SetGridResolution(128);
+    frame(640, 480, 128, "fixed");
+    frame(320, 240, 128, "fixed");
+    automatic->SetGridPixelsPerCell(4.0);
+    frame(640, 480, 160, "4 pixels per cell");
+  }
   return ok ? 0 : 1;
 }
