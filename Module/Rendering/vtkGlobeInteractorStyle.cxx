@@ -727,9 +727,19 @@ void vtkGlobeInteractorStyle::OnMouseMove()
     // Turn: about the vertical through the pivot.
     const double turn = -(pos[0] - last[0]) * vtkMath::RadiansFromDegrees(this->TiltSpeed);
     RotateAbout(c, pivot, up, turn);
-    // Tilt: about the horizontal right axis through the pivot, within 0..MaximumTilt.
+    // Tilt: about the horizontal right axis through the pivot, within 0..MaximumTilt. The tilt
+    // is signed, positive toward the screen's top (the horizontal part of the view-up, defined
+    // at the nadir too): at the nadir both senses give the same angle, and only one of them
+    // keeps the view-up pointing up.
     auto tiltOf = [&](const BodyCamera& cam) {
-      return std::acos(std::max(-1.0, std::min(1.0, -vtkMath::Dot(cam.Direction, up))));
+      double h[3];
+      const double along = vtkMath::Dot(cam.Up, up);
+      for (int i = 0; i < 3; ++i)
+      {
+        h[i] = cam.Up[i] - along * up[i];
+      }
+      vtkMath::Normalize(h);
+      return std::atan2(vtkMath::Dot(cam.Direction, h), -vtkMath::Dot(cam.Direction, up));
     };
     const double tilt = tiltOf(c);
     const double wanted = std::max(0.0,

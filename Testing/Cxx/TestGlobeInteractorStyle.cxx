@@ -31,11 +31,11 @@ namespace
 {
 const int Width = 200, Height = 150;
 
-// One event line of vtkInteractorEventRecorder's stream (version 1.1): name, x, y, ctrl,
-// shift, key code, repeat count, key symbol.
+// One event line of vtkInteractorEventRecorder's stream (version 1.1, as VTK 9.1 records it):
+// name, x, y, modifiers (shift 1, ctrl 2), key code (a number), repeat count, key symbol.
 void Line(std::ostream& os, const char* name, int x, int y, int ctrl = 0, int key = 0)
 {
-  os << name << " " << x << " " << y << " " << ctrl << " 0 " << key << " 0 ";
+  os << name << " " << x << " " << y << " " << (ctrl ? 2 : 0) << " " << key << " 0 ";
   if (key)
   {
     os << static_cast<char>(key) << "\n";
@@ -141,6 +141,10 @@ struct Stats
   int ZoomNotches = 0;
   int InexactZooms = 0;
   double MinTilt = 1e300, MaxTilt = 0; // degrees
+  int Keys = 0;
+  double WorstNadir = 0;   // tilt after 'u', degrees
+  double WorstHeading = 0; // |heading| after 'n' at the eye (the turn is about the centre's
+                           // vertical, so meridian convergence leaves a little), degrees
 };
 
 struct Context
@@ -206,6 +210,25 @@ void Check(vtkObject*, unsigned long event, void* data, void*)
     vtkMath::Normalize(projection);
     double d[3] = { viewUp[0] - projection[0], viewUp[1] - projection[1], viewUp[2] - projection[2] };
     s.WorstUp = std::max(s.WorstUp, vtkMath::Norm(d));
+  }
+  if (event == vtkCommand::CharEvent)
+  {
+    ++s.Keys;
+    const char key = c->Interactor->GetKeyCode();
+    if (std::getenv("VTKGLOBE_TEST_VERBOSE"))
+    {
+      std::printf("    key %d (%c) tilt %.3f\n", key, key, tilt);
+    }
+    if (key == 'u')
+    {
+      s.WorstNadir = std::max(s.WorstNadir, tilt);
+    }
+    else if (key == 'n')
+    {
+      // Tilted: the heading of the view; at the nadir: where the screen's up points.
+      const double heading = std::atan2(vtkMath::Dot(viewUp, east), vtkMath::Dot(viewUp, north));
+      s.WorstHeading = std::max(s.WorstHeading, std::abs(vtkMath::DegreesFromRadians(heading)));
+    }
   }
   const int* pos = c->Interactor->GetEventPosition();
   if (event == vtkCommand::InteractionEvent && c->Style->GetGrabbing())
@@ -302,6 +325,9 @@ bool Walk(const char* name, vtkGlobeTest::Scene& scene, const std::string& strea
     s.GrabMoves, s.InexactGrabMoves, s.WorstGrab);
   std::printf("  zoom: %d notches on the ground, %d inexact (lifted); worst drift %.3g px\n",
     s.ZoomNotches, s.InexactZooms, s.WorstZoom);
+  std::printf("  keys: %d; tilt after 'u' at most %.3g degrees, |heading| after 'n' at most %.3g "
+              "degrees\n",
+    s.Keys, s.WorstNadir, s.WorstHeading);
   std::printf("  after 'r': %.0f km above the ellipsoid\n", llh[2] / 1000.0);
   const double bodySize = scene.Body->GetMaximumRadius();
   bool ok = true;
@@ -320,6 +346,8 @@ bool Walk(const char* name, vtkGlobeTest::Scene& scene, const std::string& strea
   require(s.InexactGrabMoves * 10 <= s.GrabMoves, "more than 10 % of the drag moves inexact");
   require(s.ZoomNotches > 30 && s.WorstZoom < 1.0, "a zoom target left the cursor by 1 px or more");
   require(s.InexactZooms * 10 <= s.ZoomNotches, "more than 10 % of the notches inexact");
+  require(s.Keys >= 5 && s.WorstNadir < 1e-6, "'u' did not look straight down");
+  require(s.WorstHeading < 0.5, "'n' did not turn north up");
   require(s.LowestHeight < 2000.0, "the walk never came near the ground (it tests nothing)");
   require(llh[2] > bodySize, "'r' did not show the whole body");
   return ok;
