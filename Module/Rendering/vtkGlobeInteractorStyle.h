@@ -14,8 +14,8 @@
  *    cursor's ray (so that point stays under the cursor) by ZoomFactor of the distance to it,
  *    at most ZoomFactor times 10 heights above the terrain: the step shrinks with the height,
  *    so the ground is never reached;
- *  - Ctrl (or Shift) + left drag, or middle drag: tilt (vertical motion) and turn (horizontal motion)
- *    about the terrain point at the screen centre;
+ *  - Ctrl (or Shift) + left drag, or middle drag: tilt (vertical motion) and turn
+ *    (horizontal motion) about the terrain point at the screen centre;
  *  - keys: 'n' north up, 'u' look straight down, 'r' reset to a view of the whole body. They
  *    replace VTK's 'u' (user event) and 'r' (reset camera); 'f' (fly to, which can go
  *    underground) is ignored; VTK's other keys (w, s, 3, e, q, p) are kept.

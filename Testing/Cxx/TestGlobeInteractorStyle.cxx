@@ -119,7 +119,8 @@ vtkSmartPointer<vtkGlobeLayer> SyntheticHeights(const std::function<double(doubl
   {
     for (int i = 0; i < w; ++i)
     {
-      heights.push_back(static_cast<float>(value(-180.0 + (i + 0.5) * pixel, 90.0 - (j + 0.5) * pixel)));
+      const double lon = -180.0 + (i + 0.5) * pixel, lat = 90.0 - (j + 0.5) * pixel;
+      heights.push_back(static_cast<float>(value(lon, lat)));
     }
   }
   auto layer = vtkSmartPointer<vtkGlobeLayer>::New();
@@ -196,7 +197,8 @@ void Check(vtkObject*, unsigned long event, void* data, void*)
   vtkMath::Cross(view, viewUp, right);
   vtkMath::Normalize(right);
   s.WorstRoll = std::max(s.WorstRoll, std::abs(vtkMath::Dot(right, up)));
-  const double tilt = vtkMath::DegreesFromRadians(std::acos(std::max(-1.0, std::min(1.0, -vtkMath::Dot(view, up)))));
+  const double cosTilt = std::max(-1.0, std::min(1.0, -vtkMath::Dot(view, up)));
+  const double tilt = vtkMath::DegreesFromRadians(std::acos(cosTilt));
   s.MinTilt = std::min(s.MinTilt, tilt);
   s.MaxTilt = std::max(s.MaxTilt, tilt);
   if (tilt > 1.0)
@@ -208,7 +210,8 @@ void Check(vtkObject*, unsigned long event, void* data, void*)
       projection[i] = up[i] - along * view[i];
     }
     vtkMath::Normalize(projection);
-    double d[3] = { viewUp[0] - projection[0], viewUp[1] - projection[1], viewUp[2] - projection[2] };
+    double d[3] = { viewUp[0] - projection[0], viewUp[1] - projection[1],
+      viewUp[2] - projection[2] };
     s.WorstUp = std::max(s.WorstUp, vtkMath::Norm(d));
   }
   if (event == vtkCommand::CharEvent)
@@ -245,8 +248,9 @@ void Check(vtkObject*, unsigned long event, void* data, void*)
       s.WorstGrab = std::max(s.WorstGrab, std::hypot(p[0] - pos[0], p[1] - pos[1]));
     }
   }
-  if ((event == vtkCommand::MouseWheelForwardEvent || event == vtkCommand::MouseWheelBackwardEvent) &&
-    c->Style->GetZoomTargetValid())
+  const bool wheel =
+    event == vtkCommand::MouseWheelForwardEvent || event == vtkCommand::MouseWheelBackwardEvent;
+  if (wheel && c->Style->GetZoomTargetValid())
   {
     ++s.ZoomNotches;
     if (!c->Style->GetLastMoveExact())
