@@ -681,7 +681,8 @@ void vtkGlobeInteractorStyle::Zoom(
 
 void vtkGlobeInteractorStyle::OnMouseMove()
 {
-  if (!this->CurrentRenderer || !this->ActiveMapper)
+  // Between drags the globe found at the last press may be gone: touch it only while dragging.
+  if (this->State == VTKIS_NONE || !this->CurrentRenderer || !this->ActiveMapper)
   {
     return;
   }
