@@ -18,6 +18,7 @@
 #                                     build's vtkglobe package, under Xvfb when there is no display
 #   Utilities/globe.sh check [args]   the whole C++ suite under AddressSanitizer and UBSan, in
 #                                     its own build (build-check/; ctest args pass on)
+#   Utilities/globe.sh check-core     only the CI's sanitizer subset (run by `test` as well)
 #   Utilities/globe.sh fuzz [TARGET|all] [SECONDS] [libFuzzer args]
 #                                     build the libFuzzer targets with clang (build-fuzz/) and run
 #                                     each for SECONDS (default 60); findings in build-fuzz/crashes
@@ -159,6 +160,12 @@ case "$command" in
       run_sanitizer_ci
     fi
     ;;
+  check-core)
+    install_packages
+    start=$(date +%s)
+    run_sanitizer_ci
+    echo "== the sanitizer subset took $(( $(date +%s) - start )) s"
+    ;;
   check)
     install_packages
     check="${VTKGLOBE_CHECK_DIR:-$root/build-check}"
@@ -175,9 +182,20 @@ case "$command" in
     echo "== running the Core tests and the fuzz replays under the sanitizers"
     env "${sanitizer_env[@]}" "${full_stacks_env[@]}" ctest --output-on-failure --timeout 1800 \
       -R '^(Core|Fuzz)\.' "$@" || status=$?
+    # Mesa unloads its driver (swrast_dri.so, llvmpipe) when the last context goes; the blocks
+    # its static data still pointed to then look leaked to LeakSanitizer at exit (a few
+    # "indirect leaks" of 56 bytes from unmapped code, in every rendering test). Preloaded, the
+    # driver stays mapped and LeakSanitizer sees those references: nothing is suppressed for it.
+    # (libasan must come first in LD_PRELOAD.)
+    preload=()
+    asan_lib="$(ldd "$check/bin/GlobeRenderingCxxTests" 2>/dev/null | awk '/libasan/ {print $3}')"
+    dri="/usr/lib/$(gcc -print-multiarch)/dri/swrast_dri.so"
+    if [ -n "$asan_lib" ] && [ -f "$dri" ]; then
+      preload=(LD_PRELOAD="$asan_lib $dri")
+    fi
     echo "== running the other C++ tests under the sanitizers"
-    with_display env "${sanitizer_env[@]}" ctest --output-on-failure --timeout 1800 \
-      -E '^(Core\.|Fuzz\.|Install\.)' "$@" || status=$?
+    with_display env "${sanitizer_env[@]}" "${preload[@]}" ctest --output-on-failure \
+      --timeout 1800 -E '^(Core\.|Fuzz\.|Install\.)' "$@" || status=$?
     echo "== tests ran in $(( $(date +%s) - start )) s"
     exit "$status"
     ;;
@@ -287,7 +305,7 @@ case "$command" in
       /usr/bin/python3 "$@"
     ;;
   *)
-    echo "usage: $0 demo|test|check|fuzz|bench|bench-streaming|build|prepare|python [args]" >&2
+    echo "usage: $0 demo|test|check|check-core|fuzz|bench|bench-streaming|build|prepare|python [args]" >&2
     exit 2
     ;;
 esac
