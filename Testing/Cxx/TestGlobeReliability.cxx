@@ -448,10 +448,17 @@ void ShaderVariantsReleased()
     }
   }
   const double grown = vtkGlobeTest::ResidentMiB() - warm;
-  Checks.Expect(grown < 24.0,
+  const std::string what =
     Printf("24 new combinations after warm-up: resident memory %+.1f MiB (%.2f MiB each; "
            "41 MiB when every variant's program was kept)",
-      grown, grown / 24.0));
+      grown, grown / 24.0);
+#if defined(__SANITIZE_ADDRESS__)
+  // AddressSanitizer keeps freed blocks in quarantine (256 MiB) and adds shadow memory:
+  // resident memory measures it, not the shader cache. Judged in the normal build only.
+  std::printf("  (not judged under AddressSanitizer) %s\n", what.c_str());
+#else
+  Checks.Expect(grown < 24.0, what);
+#endif
 }
 } // namespace
 

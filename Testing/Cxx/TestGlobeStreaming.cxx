@@ -269,7 +269,13 @@ void MemoryBound()
     "the 128 MiB raster streams (over 100 pages loaded)");
   Checks.Expect(cache->GetNumberOfEvictedPages() > 0, "the flight needed more pages than the GPU cache holds");
   // The caches (24 MiB) and OpenImageIO's tiles in flight; nothing proportional to the raster.
+#if defined(__SANITIZE_ADDRESS__)
+  // AddressSanitizer keeps freed blocks in quarantine (256 MiB) and adds shadow memory: RSS
+  // measures it, not the caches. Judged in the normal build only.
+  std::printf("  (not judged under AddressSanitizer) RSS grew by %.1f MiB\n", growth);
+#else
   Checks.Expect(growth < 64.0, "RSS grows by less than 64 MiB while streaming 128 MiB");
+#endif
   Checks.Expect(gpu <= 4.0 * 1048576.0 + 256.0 * 1024.0,
     "GPU memory within the 4 MiB cache (and the page tables)");
 }
