@@ -502,9 +502,14 @@ void vtkGlobeInteractorStyle::OnLeftButtonUp()
     return;
   }
   this->Grabbing = false;
-  if (this->State == VTKIS_ROTATE)
+  this->EndGesture(VTKIS_ROTATE);
+}
+
+void vtkGlobeInteractorStyle::EndGesture(int state)
+{
+  if (this->State == state)
   {
-    this->EndRotate();
+    this->StopState();
   }
   if (this->Interactor)
   {
@@ -547,14 +552,7 @@ void vtkGlobeInteractorStyle::OnMiddleButtonDown()
 void vtkGlobeInteractorStyle::OnMiddleButtonUp()
 {
   this->Tilting = false;
-  if (this->State == VTKIS_SPIN)
-  {
-    this->EndSpin();
-  }
-  if (this->Interactor)
-  {
-    this->ReleaseFocus();
-  }
+  this->EndGesture(VTKIS_SPIN);
 }
 
 void vtkGlobeInteractorStyle::OnRightButtonDown()
@@ -575,30 +573,21 @@ void vtkGlobeInteractorStyle::OnRightButtonDown()
 void vtkGlobeInteractorStyle::OnRightButtonUp()
 {
   this->Zooming = false;
-  if (this->State == VTKIS_DOLLY)
-  {
-    this->EndDolly();
-  }
-  if (this->Interactor)
-  {
-    this->ReleaseFocus();
-  }
+  this->EndGesture(VTKIS_DOLLY);
 }
 
 void vtkGlobeInteractorStyle::OnMouseWheelForward()
 {
-  const int* pos = this->Interactor->GetEventPosition();
-  if (!this->Prepare(pos[0], pos[1]))
-  {
-    return;
-  }
-  this->ZoomTargetValid = this->PickSurface(pos[0], pos[1], this->ZoomTarget);
-  this->StartDolly();
-  this->Zoom(pos[0], pos[1], this->ZoomTarget, this->ZoomTargetValid, this->ZoomFactor);
-  this->EndDolly();
+  this->WheelZoom(this->ZoomFactor);
 }
 
 void vtkGlobeInteractorStyle::OnMouseWheelBackward()
+{
+  // The exact inverse of one notch in: 1 / (1 - f) - 1 of the distance, outward.
+  this->WheelZoom(-this->ZoomFactor / (1.0 - this->ZoomFactor));
+}
+
+void vtkGlobeInteractorStyle::WheelZoom(double factor)
 {
   const int* pos = this->Interactor->GetEventPosition();
   if (!this->Prepare(pos[0], pos[1]))
@@ -607,9 +596,7 @@ void vtkGlobeInteractorStyle::OnMouseWheelBackward()
   }
   this->ZoomTargetValid = this->PickSurface(pos[0], pos[1], this->ZoomTarget);
   this->StartDolly();
-  // The exact inverse of one notch in: 1 / (1 - f) - 1 of the distance, outward.
-  this->Zoom(pos[0], pos[1], this->ZoomTarget, this->ZoomTargetValid,
-    -this->ZoomFactor / (1.0 - this->ZoomFactor));
+  this->Zoom(pos[0], pos[1], this->ZoomTarget, this->ZoomTargetValid, factor);
   this->EndDolly();
 }
 

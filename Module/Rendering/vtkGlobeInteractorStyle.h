@@ -130,6 +130,10 @@ protected:
   bool PickSurface(double x, double y, double world[3]);
   void Zoom(double x, double y, const double target[3], bool targetValid, double factor);
   void Finish();
+  // A button released: ends `state` (a VTKIS_ gesture) if it is the current one.
+  void EndGesture(int state);
+  // One wheel notch: zoom toward the terrain under the cursor by `factor` of the distance.
+  void WheelZoom(double factor);
 
   vtkGlobeMapper* Mapper = nullptr;
   // The globe of the current event: Mapper, or the one found in the renderer (not owned).
