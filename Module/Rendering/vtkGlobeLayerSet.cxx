@@ -54,6 +54,7 @@ struct Entry
   vtkSmartPointer<vtkGlobeMapProjection> Projection;
   std::string Function;
   float Parameters[vtkGlobeMapProjection::NumberOfShaderParameters] = {};
+  double Reference[2] = { 0, 0 }; // the parameters' reference point (u, v), in double
   // The loaded data the projection was prepared for: georeferencing changes only with a load.
   vtkDataArray* PreparedData = nullptr;
   vtkMTimeType PreparedTime = 0;
@@ -501,8 +502,12 @@ bool vtkGlobeLayerSet::PrepareProjection(void* entry)
   double origin[2], pixelSize[2];
   layer->GetProjectedGeoTransform(origin, pixelSize);
   vtkObject::GlobalWarningDisplayOff();
-  bool ok = projection->ComputeShaderParameters(
-    origin, pixelSize, layer->GetWidth(), layer->GetHeight(), e.Parameters);
+  double parameters[vtkGlobeMapProjection::NumberOfShaderParameters];
+  bool ok = projection->ComputeShaderParametersDouble(
+    origin, pixelSize, layer->GetWidth(), layer->GetHeight(), parameters);
+  std::copy(parameters, parameters + vtkGlobeMapProjection::NumberOfShaderParameters, e.Parameters);
+  e.Reference[0] = parameters[8];
+  e.Reference[1] = parameters[9];
   // The raster must lie in the projection's domain: its centre maps to a (lon, lat) there and
   // back to itself (an inverse far outside the domain does not round-trip).
   const double centre[2] = { origin[0] + 0.5 * pixelSize[0] * layer->GetWidth(),
@@ -843,8 +848,53 @@ std::string UV(const Entry* e, const std::string& p, const LonLat& c, bool highP
   return e->Wraps ? "globe_wrapU(" + call + "))" : call + ")";
 }
 
-// A layer's filtered value at texture coordinates `uv` (GLSL): its texture, or for a
-// streamed layer its pages (globe_pageGrad), with the screen derivatives dx, dy.
+// Declares a streamed layer's texture coordinates uv<i> and its level-0 texel coordinates
+// st<i> as hi.xy + lo.zw (Documentation/streaming.md, "Exact addressing"). Geographic layers
+// with high precision: from the hi + lo (lon, lat), exact products on the hi grids
+// (globe_geographicTexels). Projected layers: the projection's offset from its reference point
+// (the function called with a zero reference), added to the reference's texel coordinates in
+// hi + lo. Otherwise uv times the size.
+void EmitStreamedCoordinates(std::ostream& s, const Entry* e, const std::string& p, size_t i,
+  bool hp)
+{
+  const std::string n = std::to_string(i);
+  const LonLat c = At(hp);
+  if (e->Function.empty())
+  {
+    s << "  vec2 uv" << n << " = " << UV(e, p, c, hp) << ";\n";
+    if (hp)
+    {
+      s << "  vec4 st" << n << " = globe_geographicTexels(" << c.LonHi << ", " << c.LonLo << ", "
+        << c.LatHi << ", " << c.LatLo << ", " << p << "Map, " << p << "MapLo, " << p
+        << "Texels, " << p << "Turn);\n";
+    }
+    else
+    {
+      s << "  vec4 st" << n << " = vec4(uv" << n << " * " << p << "Pyramid.xy, 0.0, 0.0);\n";
+    }
+    return;
+  }
+  std::string call = e->Function + "(" + c.LonHi + ", " + c.LonLo + ", " + c.LatHi + ", " + c.LatLo;
+  for (int k = 0; k < 7; ++k)
+  {
+    call += k == 2 ? ", vec4(0.0, 0.0, " + p + "Projection[2].zw)"
+                   : ", " + p + "Projection[" + std::to_string(k) + "]";
+  }
+  s << "  vec2 d" << n << " = " << call << ");\n"
+    << "  vec2 uv" << n << " = globe_projectionInDomain(" << c.LonHi << " + " << c.LonLo << ", "
+    << c.LatHi << " + " << c.LatLo << ", " << p << "Projection[4]) ? " << p
+    << "Projection[2].xy + d" << n << " : vec2(-1.0);\n";
+  if (e->Wraps)
+  {
+    s << "  uv" << n << " = globe_wrapU(uv" << n << ");\n";
+  }
+  s << "  vec4 st" << n << " = vec4(" << p << "Texels.xy, " << p << "Texels.zw + d" << n
+    << " * " << p << "Pyramid.xy);\n";
+}
+
+// A layer's filtered value (GLSL), with the screen derivatives dx, dy of its texture
+// coordinates: its texture at texture coordinates `uv`, or for a streamed layer its pages
+// (globe_pageGrad) at level-0 texel coordinates `uv` as hi + lo (StreamedTexels).
 std::string Sample(const Entry* e, const std::string& p, const std::string& uv)
 {
   if (!e->Streamed)
@@ -958,6 +1008,20 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
          "  float dLon = (hd + k * GLOBE_TWO_PI_HI) + ((lonLo - mapLo.x) + k * GLOBE_TWO_PI_LO);\n"
          "  float dLat = (map.z - latHi) + (mapLo.y - latLo);\n"
          "  return vec2(mod(dLon, globe_TwoPi) / map.y, dLat / map.w);\n"
+         "}\n"
+         // A streamed layer's level-0 texel coordinates (x east, y south) as hi.xy + lo.zw.
+         // scale: texels per radian east (hi, lo) and south (hi, lo), the hi parts with 9
+         // significant bits, so that a difference on the 2^-12 grid (15 bits) times a hi part
+         // is exact; turn: texels per 2 pi (hi on the grid of those products, lo).
+         "vec4 globe_geographicTexels(float lonHi, float lonLo, float latHi, float latLo,\n"
+         "  vec4 map, vec2 mapLo, vec4 scale, vec2 turn)\n"
+         "{\n"
+         "  float hd = lonHi - map.x;\n"
+         "  float k = hd < 0.0 ? 1.0 : 0.0;\n"
+         "  float hv = map.z - latHi;\n"
+         "  return vec4(hd * scale.x + k * turn.x, hv * scale.z,\n"
+         "    hd * scale.y + ((lonLo - mapLo.x) * (scale.x + scale.y) + k * turn.y),\n"
+         "    hv * scale.w + (mapLo.y - latLo) * (scale.z + scale.w));\n"
          "}\n";
   }
   else
@@ -1047,6 +1111,14 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
       {
         s << "uniform sampler2D " << p << "Table;\n"
           << "uniform vec4 " << p << "Pyramid;\n";
+        if (hp || !list[i]->Function.empty())
+        {
+          s << "uniform vec4 " << p << "Texels;\n";
+        }
+        if (hp && list[i]->Function.empty())
+        {
+          s << "uniform vec2 " << p << "Turn;\n";
+        }
       }
       else
       {
@@ -1125,8 +1197,15 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
       const Entry* e = list[i];
       const std::string p = Prefix(role, i);
       const std::string wraps = e->Wraps ? "true" : "false";
-      s << "  vec2 uv" << i << " = " << UV(e, p, At(hp), hp) << ";\n"
-        << "  vec2 dx" << i << ", dy" << i << ";\n"
+      if (e->Streamed)
+      {
+        EmitStreamedCoordinates(s, e, p, i, hp);
+      }
+      else
+      {
+        s << "  vec2 uv" << i << " = " << UV(e, p, At(hp), hp) << ";\n";
+      }
+      s << "  vec2 dx" << i << ", dy" << i << ";\n"
         << "  globe_uvDerivatives(uv" << i << ", " << wraps << ", dx" << i << ", dy" << i << ");\n";
     }
     for (size_t i = 0; i < list.size(); ++i)
@@ -1158,7 +1237,7 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
         {
           s << "    float v;\n    vec4 ewns;\n"
             << "    globe_pageHeights(globePagesHeights, " << p << "Table, " << p
-            << "Pyramid, uv, dx, dy, "
+            << "Pyramid, st" << n << ", dx, dy, "
             << (layer->GetInterpolation() == vtkGlobeLayer::Nearest ? "true" : "false")
             << ", v, ewns);\n"
             << "    float vE = ewns.x, vW = ewns.y, vN = ewns.z, vS = ewns.w;\n";
@@ -1202,7 +1281,7 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
       }
       else
       {
-        s << "    vec4 t = " << Sample(e, p, "uv") << ";\n"
+        s << "    vec4 t = " << Sample(e, p, e->Streamed ? "st" + n : "uv") << ";\n"
           << "    w *= t.a;\n"
           << "    vec3 rgb = pow(t.rgb, vec3(" << p << "Style.y));\n";
         switch (role)
@@ -1445,6 +1524,17 @@ std::array<float, 2> Split(double v)
   return { hi, static_cast<float>(v - hi) };
 }
 
+// A positive double as hi + lo with hi rounded to 9 significant bits; quantum: hi's last bit
+// (hi = m quantum, m < 2^9 + 1). A 15-bit multiple of the 2^-12 grid times hi is exact in float.
+std::array<float, 2> SplitShort(double v, double& quantum)
+{
+  int exponent;
+  std::frexp(v, &exponent); // v = f 2^exponent, f in [0.5, 1)
+  quantum = std::ldexp(1.0, exponent - 9);
+  const double hi = std::floor(v / quantum + 0.5) * quantum;
+  return { static_cast<float>(hi), static_cast<float>(v - hi) };
+}
+
 // The same with hi on the 2^-12 grid (globe_splitOnGrid in globe_ellipsoid.glsl).
 std::array<float, 2> OnGrid(double v)
 {
@@ -1532,6 +1622,29 @@ void vtkGlobeLayerSet::BindTextures(vtkShaderProgram* program, int roles)
         const float values[4] = { static_cast<float>(pyramid[0]), static_cast<float>(pyramid[1]),
           static_cast<float>(pyramid[2]), static_cast<float>(pyramid[3]) };
         program->SetUniform4f((p + "Pyramid").c_str(), values);
+        if (!e->Function.empty())
+        {
+          // The reference point's level-0 texel coordinates (globe_projection's p2.xy).
+          const std::array<float, 2> x = Split(e->Reference[0] * pyramid[0]);
+          const std::array<float, 2> y = Split(e->Reference[1] * pyramid[1]);
+          const float texels[4] = { x[0], y[0], x[1], y[1] };
+          program->SetUniform4f((p + "Texels").c_str(), texels);
+        }
+        else if (hp)
+        {
+          const double twoPi = 2.0 * vtkMath::Pi();
+          double quantum;
+          const std::array<float, 2> x = SplitShort(pyramid[0] / e->Map[1], quantum);
+          const std::array<float, 2> y = SplitShort(pyramid[1] / e->Map[3], quantum);
+          const float texels[4] = { x[0], x[1], y[0], y[1] };
+          program->SetUniform4f((p + "Texels").c_str(), texels);
+          // Texels per turn, its hi part a multiple of the 2^-12 grid times x's hi part's ulp.
+          const double turn = twoPi * pyramid[0] / e->Map[1];
+          const double step = quantum / 4096.0;
+          const double turnHi = std::floor(turn / step + 0.5) * step;
+          const float turns[2] = { static_cast<float>(turnHi), static_cast<float>(turn - turnHi) };
+          program->SetUniform2f((p + "Turn").c_str(), turns);
+        }
       }
       else
       {

@@ -61,6 +61,9 @@ list(APPEND globe_rendering_tests
 # need), and a raster many times the caches with bounded RSS.
 list(APPEND globe_rendering_tests
   TestGlobeStreaming.cxx)
+# Exact page addressing: a 2^20-wide self-encoding raster, written with libtiff.
+list(APPEND globe_rendering_tests
+  TestGlobeStreamingAddressing.cxx)
 # Interaction (issue 13): vtkGlobeInteractorStyle driven by vtkInteractorEventRecorder on the
 # Earth (the stream in Testing/Data/Events), the Moon and a triaxial body.
 list(APPEND globe_rendering_tests
@@ -73,7 +76,7 @@ add_executable(GlobeRenderingCxxTests ${_globe_rendering_driver_sources})
 target_link_libraries(GlobeRenderingCxxTests PRIVATE
   GlobeTestSupport VTKGlobe::Rendering VTK::RenderingCore VTK::RenderingOpenGL2
   VTK::TestingRendering VTK::FiltersSources VTK::IOImage VTK::InteractionStyle VTK::RenderingUI VTK::opengl
-  VTK::ImagingCore PROJ::proj)
+  VTK::ImagingCore PROJ::proj TIFF::TIFF)
 vtk_module_autoinit(TARGETS GlobeRenderingCxxTests
   MODULES VTK::RenderingOpenGL2 VTK::InteractionStyle)
 
@@ -104,9 +107,8 @@ endforeach ()
 # per-pixel bounds and baselines hold once refinement settled (issue "Planetary-scale data").
 # Not yet: TestGlobeNorthPole and TestGlobeEverestSummit (a few pixels beyond their bounds where
 # the footprint is extreme: a streamed pyramid stops at one page, where OpenGL's mipmaps go on
-# to 1 x 1), TestGlobeInsets (4 to 7 % of the inset pixels more than 0.1 off the level-0
-# colour) and TestGlobeProjectedLayers (it counts whole-texture uploads). Documentation/
-# streaming.md lists them.
+# to 1 x 1) and TestGlobeInsets (4 to 7 % of the inset pixels more than 0.1 off the level-0
+# colour). Documentation/streaming.md lists them.
 set(globe_streamed_tests
   TestGlobeRainier
   TestGlobeEverestHorizon
@@ -114,7 +116,8 @@ set(globe_streamed_tests
   TestGlobeNadir
   TestGlobeDeadSea
   TestGlobeMoonSurface
-  TestGlobeSharedDepth)
+  TestGlobeSharedDepth
+  TestGlobeProjectedLayers)
 foreach (test_name IN LISTS globe_streamed_tests)
   add_test(NAME "Streamed.${test_name}"
     COMMAND GlobeRenderingCxxTests "${test_name}"

@@ -13,22 +13,25 @@ float globe_pageFirstRow(float level, float rows0)
   return 2.0 * level + floor(2.0 * rows0 * (1.0 - exp2(-level)));
 }
 
-// Atlas coordinates (x, y, slot) of uv at `level`, or at its finest resident ancestor;
-// scale: atlas units per unit of uv in the page found (its own level's size).
-vec3 globe_pageCoord(sampler2D table, vec4 pyramid, vec2 uv, int level, out vec2 scale)
+// Atlas coordinates (x, y, slot) of level-0 texel coordinates t (x east, y south, as hi.xy +
+// lo.zw; see "Exact addressing" in Documentation/streaming.md) at `level`, or at its finest
+// resident ancestor; scale: atlas units per level-0 texel in the page found. The page-relative
+// position is (hi 2^-l - column P) + lo 2^-l: the first difference is exact (both terms are
+// multiples of hi's ulp, itself at most 1), so the position keeps float's relative precision
+// within the page whatever the raster's size.
+vec3 globe_pageCoord(sampler2D table, vec4 pyramid, vec4 t, int level, out vec2 scale)
 {
   float P = globePageGeometry.x;
   float l = float(level);
   float first = globe_pageFirstRow(l, pyramid.w);
   float rows = globe_pageFirstRow(l + 1.0, pyramid.w) - first;
-  // Texels per unit of uv at this level: level 0's size / 2^level.
-  vec2 page = clamp(floor(uv * pyramid.xy * exp2(-l) / P), vec2(0.0),
+  vec2 page = clamp(floor((t.xy + t.zw) * exp2(-l) / P), vec2(0.0),
     vec2(float(textureSize(table, 0).x), rows) - 1.0);
   vec4 e = texelFetch(table, ivec2(page) + ivec2(0, int(first)), 0);
-  vec2 size = pyramid.xy * exp2(-e.y); // the page's level: level 0's size / 2^level
-  vec2 local = uv * size - e.zw * P;
+  float s = exp2(-e.y); // the found page's level: level 0's size / 2^level
+  vec2 local = (t.xy * s - e.zw * P) + t.zw * s;
   float T = P + 2.0 * globePageGeometry.y;
-  scale = size / T;
+  scale = vec2(s / T);
   return vec3((local + globePageGeometry.y) / T, e.x);
 }
 
@@ -48,15 +51,14 @@ float globe_pageLod(vec4 pyramid, vec2 dx, vec2 dy)
   return clamp(log2(max(rho, 1e-30)), 0.0, pyramid.z - 1.0);
 }
 
-// Heights at uv and one level-0 texel east, west, north and south of it (the gradient),
+// Heights at t and one level-0 texel east, west, north and south of it (the gradient),
 // with one page lookup per level: the neighbours lie in the same page or its border (two
 // texels, at least one level-0 texel at every level).
-void globe_pageHeightsAt(sampler2DArray atlas, sampler2D table, vec4 pyramid, vec2 uv, int l,
+void globe_pageHeightsAt(sampler2DArray atlas, sampler2D table, vec4 pyramid, vec4 t, int l,
   bool nearest, out float v, out vec4 ewns)
 {
-  vec2 scale;
-  vec3 c = globe_pageCoord(table, pyramid, uv, l, scale);
-  vec2 s = scale / pyramid.xy;
+  vec2 s;
+  vec3 c = globe_pageCoord(table, pyramid, t, l, s);
   v = globe_pageAt(atlas, c, vec2(0.0), nearest);
   ewns = vec4(globe_pageAt(atlas, c, vec2(s.x, 0.0), nearest),
     globe_pageAt(atlas, c, vec2(-s.x, 0.0), nearest),
@@ -64,47 +66,48 @@ void globe_pageHeightsAt(sampler2DArray atlas, sampler2D table, vec4 pyramid, ve
     globe_pageAt(atlas, c, vec2(0.0, s.y), nearest));
 }
 
-void globe_pageHeights(sampler2DArray atlas, sampler2D table, vec4 pyramid, vec2 uv,
+void globe_pageHeights(sampler2DArray atlas, sampler2D table, vec4 pyramid, vec4 t,
   vec2 dx, vec2 dy, bool nearest, out float v, out vec4 ewns)
 {
   float lod = globe_pageLod(pyramid, dx, dy);
   if (nearest)
   {
-    globe_pageHeightsAt(atlas, table, pyramid, uv, int(floor(lod + 0.5)), true, v, ewns);
+    globe_pageHeightsAt(atlas, table, pyramid, t, int(floor(lod + 0.5)), true, v, ewns);
     return;
   }
   int l = int(floor(lod));
   float f = lod - float(l);
-  globe_pageHeightsAt(atlas, table, pyramid, uv, l, false, v, ewns);
+  globe_pageHeightsAt(atlas, table, pyramid, t, l, false, v, ewns);
   if (f > 0.0)
   {
     float v1;
     vec4 ewns1;
-    globe_pageHeightsAt(atlas, table, pyramid, uv, l + 1, false, v1, ewns1);
+    globe_pageHeightsAt(atlas, table, pyramid, t, l + 1, false, v1, ewns1);
     v = mix(v, v1, f);
     ewns = mix(ewns, ewns1, f);
   }
 }
 
-// A streamed layer's filtered value at uv. Linear: between the two levels around the
-// footprint's, as OpenGL's LINEAR_MIPMAP_LINEAR; nearest: the nearest level's nearest texel.
-vec4 globe_pageGrad(sampler2DArray atlas, sampler2D table, vec4 pyramid, vec2 uv, vec2 dx,
+// A streamed layer's filtered value at level-0 texel coordinates t (hi.xy + lo.zw), with the
+// screen derivatives of its texture coordinates dx, dy. Linear: between the two levels around
+// the footprint's, as OpenGL's LINEAR_MIPMAP_LINEAR; nearest: the nearest level's nearest texel.
+vec4 globe_pageGrad(sampler2DArray atlas, sampler2D table, vec4 pyramid, vec4 t, vec2 dx,
   vec2 dy, bool nearest)
 {
   float lod = globe_pageLod(pyramid, dx, dy);
   vec2 scale;
   if (nearest)
   {
-    vec3 c = globe_pageCoord(table, pyramid, uv, int(floor(lod + 0.5)), scale);
+    vec3 c = globe_pageCoord(table, pyramid, t, int(floor(lod + 0.5)), scale);
     float T = globePageGeometry.x + 2.0 * globePageGeometry.y;
     return texelFetch(atlas, ivec3(ivec2(floor(c.xy * T)), int(c.z)), 0);
   }
   int l = int(floor(lod));
   float f = lod - float(l);
-  vec4 a = textureLod(atlas, globe_pageCoord(table, pyramid, uv, l, scale), 0.0);
+  vec4 a = textureLod(atlas, globe_pageCoord(table, pyramid, t, l, scale), 0.0);
   if (f > 0.0)
   {
-    a = mix(a, textureLod(atlas, globe_pageCoord(table, pyramid, uv, l + 1, scale), 0.0), f);
+    a = mix(a, textureLod(atlas, globe_pageCoord(table, pyramid, t, l + 1, scale), 0.0), f);
   }
   return a;
 }
