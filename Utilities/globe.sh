@@ -22,12 +22,19 @@
 #   Utilities/globe.sh fuzz [TARGET|all] [SECONDS] [libFuzzer args]
 #                                     build the libFuzzer targets with clang (build-fuzz/) and run
 #                                     each for SECONDS (default 60); findings in build-fuzz/crashes
+#   Utilities/globe.sh paraview [args]  unpack Debian's ParaView 5.11 into a private prefix
+#                                     (build-paraview/prefix), build the ParaView plugin
+#                                     (Plugins/ParaView, in build-paraview/obj) and run its tests
+#                                     (ctest args pass on)
+#   Utilities/globe.sh pvpython script.py [args]   the same set-up, then run a script with that
+#                                     ParaView's pvpython (VTKGLOBE_PARAVIEW_PLUGIN names the plugin)
 #
 # `test` also runs the CI's sanitizer subset (Core and the fuzz corpus replays, build-check-core/;
 # VTKGLOBE_SANITIZER_TESTS=0 skips it). Documentation/reliability.md, "Fuzzing and sanitizers".
 #
 # Environment: VTKGLOBE_BUILD_DIR (default: build/ in the source tree), VTKGLOBE_CHECK_DIR
-# (build-check/), VTKGLOBE_CHECK_CORE_DIR (build-check-core/), VTKGLOBE_FUZZ_DIR (build-fuzz/).
+# (build-check/), VTKGLOBE_CHECK_CORE_DIR (build-check-core/), VTKGLOBE_FUZZ_DIR (build-fuzz/),
+# VTKGLOBE_PARAVIEW_DIR (build-paraview/).
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -123,6 +130,70 @@ run_sanitizer_ci() {
   echo "== running the sanitizer subset"
   (cd "$dir" && env "${sanitizer_env[@]}" "${full_stacks_env[@]}" ctest --output-on-failure \
     --timeout 900 -R "$sanitizer_ci_tests")
+}
+
+# ParaView (Plugins/ParaView; Documentation/user-guide.md, "ParaView"). Debian's python3-paraview
+# conflicts with python3-vtk9 (both own dist-packages/vtkmodules): installing it would remove
+# python3-vtk9 and libvtk9-dev, which the main build needs. So the three ParaView packages are
+# only downloaded and unpacked into a private prefix (their CMake files and pvpython are
+# relocatable as they are), and apt installs only their dependencies, none of which conflicts:
+# what they declare, the Qt development packages paraview-config.cmake looks for, and Open MPI's
+# mpirun. Nothing is installed when the simulation says apt would remove a package.
+paraview_dir="${VTKGLOBE_PARAVIEW_DIR:-$root/build-paraview}"
+paraview_prefix="$paraview_dir/prefix"
+paraview_debs=(paraview paraview-dev python3-paraview)
+paraview_packages=(qtbase5-dev libqt5svg5-dev qttools5-dev libqt5opengl5-dev openmpi-bin)
+
+setup_paraview() {
+  local debs="$paraview_dir/debs"
+  if [ ! -f "$paraview_prefix/.unpacked" ] || [ "$(ls "$debs"/*.deb 2>/dev/null | wc -l)" != 3 ]; then
+    rm -f "$paraview_prefix/.unpacked"
+    if ! apt-cache show paraview-dev >/dev/null 2>&1; then
+      as_root env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+    fi
+    echo "== downloading ${paraview_debs[*]} into $debs (not installed)"
+    rm -rf "$debs"
+    mkdir -p "$debs"
+    (cd "$debs" && apt-get download "${paraview_debs[@]}")
+  fi
+  # Their dependencies, first alternatives, without versions, less the three themselves.
+  local deps=()
+  mapfile -t deps < <(for deb in "$debs"/*.deb; do dpkg-deb -f "$deb" Depends | tr ',' '\n'; done |
+    sed 's/|.*//; s/(.*)//; s/:any//; s/ //g' | grep -vxE 'paraview|paraview-dev|python3-paraview|' |
+    sort -u)
+  local simulation
+  simulation="$(apt-get install -s --no-install-recommends "${deps[@]}" "${paraview_packages[@]}")"
+  if grep -q '^Remv' <<<"$simulation"; then
+    echo "== refusing to install ParaView's dependencies: apt would remove" \
+      "$(grep '^Remv' <<<"$simulation" | cut -d' ' -f2 | tr '\n' ' ')" >&2
+    exit 1
+  fi
+  if grep -q '^Inst' <<<"$simulation"; then
+    echo "== installing ParaView's dependencies ($(grep -c '^Inst' <<<"$simulation") packages)"
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
+      "${deps[@]}" "${paraview_packages[@]}"
+  fi
+  if [ ! -f "$paraview_prefix/.unpacked" ]; then
+    echo "== unpacking them into $paraview_prefix"
+    rm -rf "$paraview_prefix"
+    for deb in "$debs"/*.deb; do
+      dpkg-deb -x "$deb" "$paraview_prefix"
+    done
+    touch "$paraview_prefix/.unpacked"
+  fi
+}
+
+# The plugin's build, against the private ParaView.
+paraview_obj="$paraview_dir/obj"
+build_paraview_plugin() {
+  if [ ! -f "$paraview_obj/CMakeCache.txt" ]; then
+    echo "== configuring the ParaView plugin in $paraview_obj"
+    cmake -S "$root/Plugins/ParaView" -B "$paraview_obj" -DCMAKE_BUILD_TYPE=Release \
+      -DPython3_EXECUTABLE=/usr/bin/python3 \
+      -DParaView_DIR="$paraview_prefix/usr/lib/$(gcc -print-multiarch)/cmake/paraview-5.11"
+  fi
+  echo "== building the ParaView plugin"
+  cmake --build "$paraview_obj" --parallel "$(nproc)"
 }
 
 # Runs a command with a display: the user's, or a private Xvfb server (Mesa's llvmpipe gives
@@ -297,6 +368,31 @@ case "$command" in
     echo "== preparing (GlobePrepare $*)"
     "$build/bin/GlobePrepare" "$@"
     ;;
+  paraview)
+    install_packages
+    start=$(date +%s)
+    setup_paraview
+    echo "== ParaView set up in $(( $(date +%s) - start )) s"
+    start=$(date +%s)
+    build_paraview_plugin
+    echo "== plugin built in $(( $(date +%s) - start )) s"
+    start=$(date +%s)
+    echo "== running the ParaView tests"
+    status=0
+    (cd "$paraview_obj" && with_display ctest --output-on-failure --timeout 900 "$@") || status=$?
+    echo "== ParaView tests ran in $(( $(date +%s) - start )) s"
+    exit "$status"
+    ;;
+  pvpython)
+    install_packages >&2
+    setup_paraview >&2
+    build_paraview_plugin >&2
+    pv="$paraview_prefix/usr"
+    with_display env LD_LIBRARY_PATH="$pv/lib/$(gcc -print-multiarch)${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" \
+      PYTHONPATH="$pv/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}" \
+      VTKGLOBE_PARAVIEW_PLUGIN="$paraview_obj/lib/paraview-5.11/plugins/VTKGlobe/VTKGlobe.so" \
+      "$pv/bin/pvpython" --force-offscreen-rendering "$@"
+    ;;
   python)
     install_packages >&2
     build_project >&2
@@ -305,7 +401,7 @@ case "$command" in
       /usr/bin/python3 "$@"
     ;;
   *)
-    echo "usage: $0 demo|test|check|check-core|fuzz|bench|bench-streaming|build|prepare|python [args]" >&2
+    echo "usage: $0 demo|test|check|check-core|fuzz|bench|bench-streaming|build|prepare|python|paraview|pvpython [args]" >&2
     exit 2
     ;;
 esac
