@@ -9,6 +9,7 @@
 #include "vtkGlobeLayer.h"
 #include "vtkGlobeLayerSet.h"
 #include "vtkGlobeMapper.h"
+#include "vtkGlobeTerrain.h"
 #include "vtkInformation.h"
 #include "vtkInformationObjectBaseKey.h"
 #include "vtkMath.h"
@@ -219,6 +220,14 @@ LocalTerrain ComputeLocalTerrain(vtkGlobeMapper* mapper, double lon, double lat,
 double vtkGlobeClippingRange::ComputeTerrainHeight(
   vtkGlobeMapper* mapper, double lon, double lat, bool& exact)
 {
+  // The composition itself (vtkGlobeTerrain); where it cannot be had (a streamed page that
+  // cannot be read), the tallest data there.
+  const double h = mapper->GetTerrain()->GetHeight(lon, lat);
+  if (std::isfinite(h))
+  {
+    exact = true;
+    return h;
+  }
   const double metresPerDegree = mapper->GetEllipsoid()->GetMinimumRadius() * vtkMath::Pi() / 180.0;
   const LocalTerrain t = ComputeLocalTerrain(mapper, lon, lat, 1.0, metresPerDegree);
   exact = t.Exact;

@@ -71,10 +71,9 @@ public:
     double range[2]);
 
   /**
-   * The composed terrain height (m) at (lon, lat) in degrees, from the layers' CPU data by the
-   * composition rules (DrawOrder, blend modes, weights), when one point decides it; otherwise
-   * (partial weights, projected layers) an upper bound: the tallest data there. `exact` says
-   * which. The same composition the near plane uses.
+   * The composed terrain height (m) at (lon, lat) in degrees: the mapper's vtkGlobeTerrain
+   * (the GPU's composition rules on the CPU), `exact` true; where it has no answer (a
+   * streamed page that cannot be read), an upper bound, the tallest data there, `exact` false.
    */
   static double ComputeTerrainHeight(vtkGlobeMapper* mapper, double lon, double lat, bool& exact);
 

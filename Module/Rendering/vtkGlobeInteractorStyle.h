@@ -20,7 +20,7 @@
  *    replace VTK's 'u' (user event) and 'r' (reset camera); 'f' (fly to, which can go
  *    underground) is ignored; VTK's other keys (w, s, 3, e, q, p) are kept.
  * After every move the camera is kept MinimumHeightAboveTerrain over the composed terrain at
- * its sub-point (vtkGlobeClippingRange::ComputeTerrainHeight, the near plane's composition),
+ * its sub-point (the mapper's vtkGlobeTerrain: the GPU's composition rules on the CPU),
  * moved back along the cursor ray when that keeps the grabbed or zoomed point under the cursor,
  * else up along the local vertical; and it is never rolled: its right vector is horizontal, so
  * its view-up is the projection of the local geodetic up on the view plane (at the nadir, where

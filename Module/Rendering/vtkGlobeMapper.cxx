@@ -14,6 +14,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkGlobeProjectiveGrid.h"
 #include "vtkGlobeShaderSources.h"
+#include "vtkGlobeTerrain.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
@@ -50,6 +51,7 @@ class vtkGlobeMapper::vtkInternals
 public:
   vtkSmartPointer<vtkGlobeEllipsoid> Ellipsoid = vtkSmartPointer<vtkGlobeEllipsoid>::New();
   vtkNew<vtkGlobeLayerSet> Layers;
+  vtkNew<vtkGlobeTerrain> Terrain; // the layers composed on the CPU (GetTerrain)
   vtkNew<vtkGlobeProjectiveGrid> Grid;
   vtkNew<vtkGlobeGridPass> GridPass;
   vtkNew<vtkGlobeCompositePass> Composite;
@@ -222,6 +224,27 @@ vtkGlobeLayer* vtkGlobeMapper::GetLayer(int index)
 vtkGlobeLayerSet* vtkGlobeMapper::GetLayerSet()
 {
   return this->Internals->Layers;
+}
+
+vtkGlobeTerrain* vtkGlobeMapper::GetTerrain()
+{
+  // The same layers, in the same order, as the mapper's (added and removed since?).
+  vtkGlobeTerrain* terrain = this->Internals->Terrain;
+  const int n = this->GetNumberOfLayers();
+  bool same = terrain->GetNumberOfLayers() == n;
+  for (int i = 0; same && i < n; ++i)
+  {
+    same = terrain->GetLayer(i) == this->GetLayer(i);
+  }
+  if (!same)
+  {
+    terrain->RemoveAllLayers();
+    for (int i = 0; i < n; ++i)
+    {
+      terrain->AddLayer(this->GetLayer(i));
+    }
+  }
+  return terrain;
 }
 
 void vtkGlobeMapper::SetGridResolution(int resolution)

@@ -49,6 +49,7 @@ class vtkGlobeEllipsoid;
 class vtkGlobeGridPass;
 class vtkGlobeLayer;
 class vtkGlobeLayerSet;
+class vtkGlobeTerrain;
 class vtkGlobeProjectiveGrid;
 class vtkGlobePageCache;
 class vtkTextureObject;
@@ -92,6 +93,13 @@ public:
   vtkGlobeLayer* GetLayer(int index);
   vtkGlobeLayerSet* GetLayerSet();
   ///@}
+
+  /**
+   * The composed terrain of the mapper's height layers on the CPU, by the GPU's rules
+   * (vtkGlobeTerrain: GetHeight, GetOrthometricHeight at a longitude and latitude, with its
+   * bound against the picture). It follows AddLayer and RemoveLayer.
+   */
+  vtkGlobeTerrain* GetTerrain();
 
   ///@{
   /**

@@ -68,6 +68,9 @@ list(APPEND globe_rendering_tests
 # Earth (the stream in Testing/Data/Events), the Moon and a triaxial body.
 list(APPEND globe_rendering_tests
   TestGlobeInteractorStyle.cxx)
+# Terrain queries (issue 13): vtkGlobeTerrain against PROJ, arithmetic and the depth buffer.
+list(APPEND globe_rendering_tests
+  TestGlobeTerrainQuery.cxx)
 
 create_test_sourcelist(_globe_rendering_driver_sources GlobeRenderingCxxTests.cxx
   ${globe_rendering_tests}

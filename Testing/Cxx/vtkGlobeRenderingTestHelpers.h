@@ -16,6 +16,7 @@
 #include "vtkGlobeMapper.h"
 #include "vtkGlobePageCache.h"
 #include "vtkGlobeProjectiveGrid.h"
+#include "vtkGlobeTerrain.h"
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -449,67 +450,28 @@ inline double CoverageWeight(vtkGlobeLayer* layer, double lon, double lat)
   return w;
 }
 
-/// The enabled, valid layers of one role in composition order (DrawOrder, then as added).
-inline std::vector<vtkGlobeLayer*> CompositionOrder(const std::vector<vtkGlobeLayer*>& layers, int role)
-{
-  std::vector<vtkGlobeLayer*> order;
-  for (vtkGlobeLayer* layer : layers)
-  {
-    if (layer->GetRole() == role && layer->GetEnabled() && layer->IsValid())
-    {
-      order.push_back(layer);
-    }
-  }
-  std::stable_sort(order.begin(), order.end(), [](vtkGlobeLayer* a, vtkGlobeLayer* b) {
-    return a->GetDrawOrder() < b->GetDrawOrder();
-  });
-  return order;
-}
-
-/// The composed terrain height at (lon, lat) as vtkGlobeLayerSet composes it on the GPU (a C++
-/// mirror of the generated GLSL, for tests): layers in composition order, each weighted by
-/// coverage, feathered border and opacity (zero where its value is NaN or outside its valid
-/// range), blended by its mode; a run of Average layers replaces by its weighted mean.
+/// The composed terrain height at (lon, lat) as vtkGlobeLayerSet composes it on the GPU: the
+/// library's own CPU composition, vtkGlobeTerrain (layers in composition order, each weighted
+/// by coverage, feathered border and opacity, zero where its value is NaN or outside its valid
+/// range, blended by its mode, heights above a geoid made ellipsoidal). One terrain is kept for
+/// the last list of layers asked about.
 inline double ComposedHeight(const std::vector<vtkGlobeLayer*>& layers, double lon, double lat)
 {
-  const std::vector<vtkGlobeLayer*> order = CompositionOrder(layers, vtkGlobeLayer::Height);
-  double h = 0.0, sumW = 0.0, sumV = 0.0;
-  for (size_t i = 0; i < order.size(); ++i)
+  static vtkSmartPointer<vtkGlobeTerrain> terrain = vtkSmartPointer<vtkGlobeTerrain>::New();
+  bool same = terrain->GetNumberOfLayers() == static_cast<int>(layers.size());
+  for (size_t i = 0; same && i < layers.size(); ++i)
   {
-    vtkGlobeLayer* layer = order[i];
-    double value = 0.0;
-    double w = 0.0;
-    if (SampleHeight(layer, lon, lat, value) && !std::isnan(value) &&
-      value >= layer->GetValidRange()[0] && value <= layer->GetValidRange()[1])
+    same = terrain->GetLayer(static_cast<int>(i)) == layers[i];
+  }
+  if (!same)
+  {
+    terrain->RemoveAllLayers();
+    for (vtkGlobeLayer* layer : layers)
     {
-      w = CoverageWeight(layer, lon, lat) * layer->GetOpacity();
-    }
-    else
-    {
-      value = 0.0; // the GPU gives this layer zero weight here
-    }
-    switch (layer->GetBlendMode())
-    {
-      case vtkGlobeLayer::Add:
-        h += w * value;
-        break;
-      case vtkGlobeLayer::Average:
-        sumW += w;
-        sumV += w * value;
-        if (i + 1 == order.size() || order[i + 1]->GetBlendMode() != vtkGlobeLayer::Average)
-        {
-          if (sumW > 0)
-          {
-            h += (sumV / sumW - h) * std::min(sumW, 1.0);
-          }
-          sumW = sumV = 0.0;
-        }
-        break;
-      default:
-        h += (value - h) * w;
+      terrain->AddLayer(layer);
     }
   }
-  return h;
+  return terrain->GetHeight(lon, lat);
 }
 
 /// Image layers derived from a global height layer, for the effects: a water mask (1 where the

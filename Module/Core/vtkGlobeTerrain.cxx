@@ -1,0 +1,468 @@
+#include "vtkGlobeTerrain.h"
+
+#include "vtkFloatArray.h"
+#include "vtkGlobeGeoid.h"
+#include "vtkGlobeLayer.h"
+#include "vtkGlobeMapProjection.h"
+#include "vtkGlobePageSource.h"
+#include "vtkMath.h"
+#include "vtkObjectFactory.h"
+#include "vtkSmartPointer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <tuple>
+#include <vector>
+
+vtkStandardNewMacro(vtkGlobeTerrain);
+vtkCxxSetObjectMacro(vtkGlobeTerrain, Geoid, vtkGlobeGeoid);
+
+namespace
+{
+/// One height layer as the composition sees it, taken when the layer last changed.
+struct Composed
+{
+  vtkGlobeLayer* Layer = nullptr;
+  vtkGlobeGeoid* Geoid = nullptr; // valid geoid of a Geoid datum, else nullptr
+  vtkSmartPointer<vtkGlobeMapProjection> Projection; // projected layers
+  double Extent[4] = { 0, 0, 0, 0 };                // geographic layers
+  double Origin[2] = { 0, 0 }, Pixel[2] = { 0, 0 }; // projected layers
+  int Width = 0, Height = 0;
+  bool Wraps = false;
+  double Border[2] = { 0, 0 }; // feather / size per axis (0: no border)
+  const float* Values = nullptr; // whole layers
+  bool Streamed = false;
+  int PageSize = 0, PageBorder = 0;
+};
+
+constexpr double Degree = 3.14159265358979323846 / 180.0;
+} // namespace
+
+struct vtkGlobeTerrain::vtkInternals
+{
+  std::vector<vtkSmartPointer<vtkGlobeLayer>> Layers;
+  // The composition order and each layer's state when it was taken.
+  std::vector<Composed> Order;
+  std::vector<std::tuple<vtkGlobeLayer*, vtkMTimeType, int>> Stamp;
+  vtkMTimeType Built = 0;
+  // Level-0 pages of streamed layers read so far: (layer, column, row) -> values.
+  std::map<std::tuple<vtkGlobeLayer*, int, int>, vtkSmartPointer<vtkFloatArray>> Pages;
+
+  bool Stale(vtkGlobeTerrain* self)
+  {
+    if (self->GetMTime() > this->Built || this->Stamp.size() != this->Layers.size())
+    {
+      return true;
+    }
+    for (size_t i = 0; i < this->Layers.size(); ++i)
+    {
+      vtkGlobeLayer* layer = this->Layers[i];
+      if (std::get<0>(this->Stamp[i]) != layer || std::get<1>(this->Stamp[i]) != layer->GetMTime() ||
+        std::get<2>(this->Stamp[i]) != layer->GetNumberOfLoads())
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  void Build(vtkGlobeTerrain* self)
+  {
+    this->Order.clear();
+    this->Pages.clear();
+    std::vector<std::pair<vtkGlobeLayer*, size_t>> order;
+    for (size_t i = 0; i < this->Layers.size(); ++i)
+    {
+      vtkGlobeLayer* layer = this->Layers[i];
+      if (layer->GetRole() != vtkGlobeLayer::Height || !layer->GetEnabled())
+      {
+        continue;
+      }
+      if (layer->GetNumberOfLoads() == 0 && !layer->IsValid())
+      {
+        layer->Update(); // never loaded: the first query loads it
+      }
+      if (layer->IsValid())
+      {
+        order.emplace_back(layer, i);
+      }
+    }
+    std::stable_sort(order.begin(), order.end(),
+      [](const std::pair<vtkGlobeLayer*, size_t>& a, const std::pair<vtkGlobeLayer*, size_t>& b) {
+        return a.first->GetDrawOrder() < b.first->GetDrawOrder();
+      });
+    for (const auto& entry : order)
+    {
+      vtkGlobeLayer* layer = entry.first;
+      Composed c;
+      c.Layer = layer;
+      c.Width = layer->GetWidth();
+      c.Height = layer->GetHeight();
+      if (c.Width <= 0 || c.Height <= 0)
+      {
+        continue;
+      }
+      if (vtkGlobeGeoid* geoid = layer->GetGeoid())
+      {
+        if (!geoid->IsValid())
+        {
+          continue; // the renderer skips a layer whose heights cannot be made ellipsoidal
+        }
+        c.Geoid = geoid;
+      }
+      c.Wraps = layer->IsGlobal();
+      const double feather = layer->GetFeatherWidth();
+      if (layer->GetModelType() == vtkGlobeLayer::Projected)
+      {
+        c.Projection = vtkSmartPointer<vtkGlobeMapProjection>::New();
+        if (!vtkGlobeMapProjection::IsSupportedEPSG(layer->GetEPSG()) ||
+          !c.Projection->SetFromEPSG(layer->GetEPSG()))
+        {
+          continue; // the renderer cannot draw it either
+        }
+        layer->GetProjectedGeoTransform(c.Origin, c.Pixel);
+        c.Border[0] = c.Wraps ? 0.0 : feather / c.Width;
+        c.Border[1] = feather / c.Height;
+      }
+      else if (layer->GetModelType() == vtkGlobeLayer::Geographic)
+      {
+        layer->GetGeographicExtent(c.Extent);
+        c.Border[0] = c.Wraps ? 0.0 : feather / c.Width;
+        c.Border[1] = c.Extent[2] <= -90.0 && c.Extent[3] >= 90.0 ? 0.0 : feather / c.Height;
+      }
+      else
+      {
+        continue;
+      }
+      c.Streamed = layer->IsStreamed();
+      if (c.Streamed)
+      {
+        vtkGlobePageSource* source = layer->GetPageSource();
+        if (!source)
+        {
+          continue;
+        }
+        c.PageSize = source->GetPageSize();
+        c.PageBorder = source->GetBorder();
+      }
+      else
+      {
+        auto* values = vtkFloatArray::SafeDownCast(layer->GetData());
+        if (!values)
+        {
+          continue;
+        }
+        c.Values = values->GetPointer(0);
+      }
+      this->Order.push_back(c);
+    }
+    this->Stamp.clear();
+    for (vtkGlobeLayer* layer : this->Layers)
+    {
+      this->Stamp.emplace_back(layer, layer->GetMTime(), layer->GetNumberOfLoads());
+    }
+    this->Built = self->GetMTime();
+  }
+
+  /// A post of a layer (column i east, row j south of the north edge), clamped or wrapped.
+  double Post(const Composed& c, int i, int j)
+  {
+    i = c.Wraps ? ((i % c.Width) + c.Width) % c.Width : std::max(0, std::min(i, c.Width - 1));
+    j = std::max(0, std::min(j, c.Height - 1));
+    if (!c.Streamed)
+    {
+      return c.Values[static_cast<size_t>(j) * c.Width + i];
+    }
+    const int column = i / c.PageSize, row = j / c.PageSize;
+    auto key = std::make_tuple(c.Layer, column, row);
+    auto found = this->Pages.find(key);
+    if (found == this->Pages.end())
+    {
+      if (this->Pages.size() >= 64)
+      {
+        this->Pages.clear(); // bounded memory: start over
+      }
+      auto page = vtkSmartPointer<vtkFloatArray>::New();
+      if (!c.Layer->ReadPage(0, column, row, page))
+      {
+        page = nullptr;
+      }
+      found = this->Pages.emplace(key, page).first;
+    }
+    if (!found->second)
+    {
+      return std::nan("");
+    }
+    const int side = c.PageSize + 2 * c.PageBorder;
+    const int x = c.PageBorder + i % c.PageSize, y = c.PageBorder + j % c.PageSize;
+    return found->second->GetValue(static_cast<vtkIdType>(y) * side + x);
+  }
+
+  /// Texture coordinates (u east, v south, [0, 1] over the outer pixel edges); false where
+  /// the projection is undefined.
+  static bool UV(const Composed& c, double lon, double lat, double& u, double& v)
+  {
+    if (c.Projection)
+    {
+      double xy[2];
+      if (!c.Projection->IsInValidDomain(lon, lat) || !c.Projection->Forward(lon, lat, xy))
+      {
+        return false;
+      }
+      u = (xy[0] - c.Origin[0]) / (c.Pixel[0] * c.Width);
+      v = (c.Origin[1] - xy[1]) / (c.Pixel[1] * c.Height);
+      if (c.Wraps)
+      {
+        u -= std::floor(u);
+      }
+      return std::isfinite(u) && std::isfinite(v);
+    }
+    u = std::fmod(std::fmod(lon - c.Extent[0], 360.0) + 360.0, 360.0) / (c.Extent[1] - c.Extent[0]);
+    v = (c.Extent[3] - lat) / (c.Extent[3] - c.Extent[2]);
+    return std::isfinite(u) && std::isfinite(v);
+  }
+
+  /// The filtered value at (u, v) as the GPU samples level 0.
+  double Sample(const Composed& c, double u, double v, bool nearest)
+  {
+    const double x = u * c.Width, y = v * c.Height;
+    if (nearest)
+    {
+      return this->Post(c, static_cast<int>(std::floor(x)), static_cast<int>(std::floor(y)));
+    }
+    const double fx0 = x - 0.5, fy0 = y - 0.5;
+    const int i = static_cast<int>(std::floor(fx0)), j = static_cast<int>(std::floor(fy0));
+    const double fx = fx0 - i, fy = fy0 - j;
+    return (1 - fy) * ((1 - fx) * this->Post(c, i, j) + fx * this->Post(c, i + 1, j)) +
+      fy * ((1 - fx) * this->Post(c, i, j + 1) + fx * this->Post(c, i + 1, j + 1));
+  }
+
+  /// One layer's value (ellipsoidal, m) and weight at (lon, lat).
+  void Evaluate(const Composed& c, double lon, double lat, double& value, double& weight)
+  {
+    value = 0.0;
+    weight = 0.0;
+    double u, v;
+    if (!UV(c, lon, lat, u, v) || u < 0.0 || u > 1.0 || v < 0.0 || v > 1.0)
+    {
+      return;
+    }
+    vtkGlobeLayer* layer = c.Layer;
+    double w = 1.0;
+    if (c.Border[0] > 0.0)
+    {
+      w *= std::min(1.0, std::max(0.0, std::min(u, 1.0 - u) / c.Border[0]));
+    }
+    if (c.Border[1] > 0.0)
+    {
+      w *= std::min(1.0, std::max(0.0, std::min(v, 1.0 - v) / c.Border[1]));
+    }
+    w *= layer->GetOpacity();
+    if (w > 0.0 && layer->GetProjectionQualityWeight())
+    {
+      // Kooima's weight from the texel aspect of the map here (vtkGlobeLayerSet's
+      // globe_quality): two points 1e-3 rad east and towards the equator.
+      const double step = 1e-3 / Degree;
+      double uE, vE, uN, vN;
+      if (UV(c, lon + step, lat, uE, vE) && UV(c, lon, lat > 0.0 ? lat - step : lat + step, uN, vN))
+      {
+        double eu = uE - u;
+        if (c.Wraps)
+        {
+          eu -= std::floor(eu + 0.5);
+        }
+        const double cosLat = std::max(std::cos(lat * Degree), 1e-6);
+        const double te = std::hypot(eu * c.Width, (vE - v) * c.Height) / cosLat;
+        const double tn = std::hypot((uN - u) * c.Width, (vN - v) * c.Height);
+        if (te > 0.0 && tn > 0.0)
+        {
+          w *= std::min(1.0, std::max(0.0, 1.0 - std::abs(std::log(te / tn)) /
+            std::log(layer->GetProjectionQualityLimit())));
+        }
+      }
+    }
+    if (!(w > 0.0))
+    {
+      return;
+    }
+    const bool nearest = layer->GetInterpolation() == vtkGlobeLayer::Nearest;
+    const double h = this->Sample(c, u, v, nearest);
+    // The GPU's gradient samples one texel away each way: a NaN there voids the sample too.
+    const double du = 1.0 / c.Width, dv = 1.0 / c.Height;
+    const double neighbours = this->Sample(c, u + du, v, nearest) +
+      this->Sample(c, u - du, v, nearest) + this->Sample(c, u, v - dv, nearest) +
+      this->Sample(c, u, v + dv, nearest);
+    const double* valid = layer->GetValidRange();
+    if (std::isnan(h) || std::isnan(neighbours) || !(h >= valid[0] && h <= valid[1]))
+    {
+      return;
+    }
+    double n = 0.0;
+    if (c.Geoid)
+    {
+      n = c.Geoid->GetUndulation(lon, lat);
+      if (!std::isfinite(n))
+      {
+        return;
+      }
+    }
+    value = h + n;
+    weight = w;
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkGlobeTerrain::vtkGlobeTerrain()
+  : Internals(new vtkInternals)
+{
+}
+
+vtkGlobeTerrain::~vtkGlobeTerrain()
+{
+  this->SetGeoid(nullptr);
+}
+
+void vtkGlobeTerrain::AddLayer(vtkGlobeLayer* layer)
+{
+  if (!layer)
+  {
+    vtkErrorMacro(<< "AddLayer: no layer");
+    return;
+  }
+  this->Internals->Layers.emplace_back(layer);
+  this->Modified();
+}
+
+void vtkGlobeTerrain::RemoveLayer(vtkGlobeLayer* layer)
+{
+  auto& layers = this->Internals->Layers;
+  const auto end = std::remove(layers.begin(), layers.end(), layer);
+  if (end != layers.end())
+  {
+    layers.erase(end, layers.end());
+    this->Modified();
+  }
+}
+
+void vtkGlobeTerrain::RemoveAllLayers()
+{
+  if (!this->Internals->Layers.empty())
+  {
+    this->Internals->Layers.clear();
+    this->Modified();
+  }
+}
+
+int vtkGlobeTerrain::GetNumberOfLayers()
+{
+  return static_cast<int>(this->Internals->Layers.size());
+}
+
+vtkGlobeLayer* vtkGlobeTerrain::GetLayer(int index)
+{
+  if (index < 0 || index >= this->GetNumberOfLayers())
+  {
+    vtkErrorMacro(<< "GetLayer: index " << index << " out of range [0, "
+                  << this->GetNumberOfLayers() << ")");
+    return nullptr;
+  }
+  return this->Internals->Layers[index];
+}
+
+void vtkGlobeTerrain::Update()
+{
+  for (vtkGlobeLayer* layer : this->Internals->Layers)
+  {
+    if (layer->GetRole() == vtkGlobeLayer::Height && layer->GetEnabled())
+    {
+      layer->Update();
+    }
+  }
+  this->Internals->Build(this);
+}
+
+//------------------------------------------------------------------------------
+double vtkGlobeTerrain::GetHeight(double lon, double lat)
+{
+  vtkInternals& in = *this->Internals;
+  if (in.Stale(this))
+  {
+    in.Build(this);
+  }
+  if (!std::isfinite(lon) || !std::isfinite(lat))
+  {
+    return std::nan("");
+  }
+  lat = std::max(-90.0, std::min(90.0, lat));
+  double h = 0.0, sumW = 0.0, sumV = 0.0;
+  for (size_t i = 0; i < in.Order.size(); ++i)
+  {
+    const Composed& c = in.Order[i];
+    double value, w;
+    in.Evaluate(c, lon, lat, value, w);
+    const int mode = c.Layer->GetBlendMode();
+    switch (mode)
+    {
+      case vtkGlobeLayer::Add:
+        h += w * value;
+        break;
+      case vtkGlobeLayer::Average:
+        sumW += w;
+        sumV += w * value;
+        break;
+      default:
+        h += (value - h) * w;
+    }
+    const bool lastOfRun =
+      i + 1 == in.Order.size() || in.Order[i + 1].Layer->GetBlendMode() != vtkGlobeLayer::Average;
+    if (mode == vtkGlobeLayer::Average && lastOfRun)
+    {
+      if (sumW > 0.0)
+      {
+        h += (sumV / sumW - h) * std::min(sumW, 1.0);
+      }
+      sumW = sumV = 0.0;
+    }
+  }
+  return h;
+}
+
+double vtkGlobeTerrain::GetGeoidUndulation(double lon, double lat)
+{
+  if (this->Geoid)
+  {
+    this->Geoid->Update();
+    return this->Geoid->GetUndulation(lon, lat);
+  }
+  vtkInternals& in = *this->Internals;
+  if (in.Stale(this))
+  {
+    in.Build(this);
+  }
+  for (auto c = in.Order.rbegin(); c != in.Order.rend(); ++c)
+  {
+    if (c->Geoid)
+    {
+      return c->Geoid->GetUndulation(lon, lat);
+    }
+  }
+  return std::nan("");
+}
+
+double vtkGlobeTerrain::GetOrthometricHeight(double lon, double lat)
+{
+  return this->GetHeight(lon, lat) - this->GetGeoidUndulation(lon, lat);
+}
+
+//------------------------------------------------------------------------------
+void vtkGlobeTerrain::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfLayers: " << this->GetNumberOfLayers() << "\n";
+  for (vtkGlobeLayer* layer : this->Internals->Layers)
+  {
+    os << indent.GetNextIndent() << layer->GetName() << " (" << layer->GetRoleAsString() << ")\n";
+  }
+  os << indent << "Geoid: " << this->Geoid << "\n";
+}
