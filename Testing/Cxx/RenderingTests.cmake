@@ -68,9 +68,11 @@ list(APPEND globe_rendering_tests
 # Earth (the stream in Testing/Data/Events), the Moon and a triaxial body.
 list(APPEND globe_rendering_tests
   TestGlobeInteractorStyle.cxx)
-# Terrain queries (issue 13): vtkGlobeTerrain against PROJ, arithmetic and the depth buffer.
+# Terrain queries (issue 13): vtkGlobeTerrain against PROJ, arithmetic and the depth buffer;
+# vtkGlobeTerrainClamp's points on it and along GeographicLib's geodesics.
 list(APPEND globe_rendering_tests
-  TestGlobeTerrainQuery.cxx)
+  TestGlobeTerrainQuery.cxx
+  TestGlobeTerrainClamp.cxx)
 
 create_test_sourcelist(_globe_rendering_driver_sources GlobeRenderingCxxTests.cxx
   ${globe_rendering_tests}
@@ -130,3 +132,5 @@ foreach (test_name IN LISTS globe_streamed_tests)
   set_tests_properties("Streamed.${test_name}" PROPERTIES
     TIMEOUT 600 ENVIRONMENT "VTKGLOBE_TEST_STREAMING=1")
 endforeach ()
+# TestGlobeTerrainClamp checks geodesics with GeographicLib.
+target_link_libraries(GlobeRenderingCxxTests PRIVATE ${GeographicLib_LIBRARIES})
