@@ -20,10 +20,14 @@
 //     a systematic error such as EGM96's N left out, 19 m here, is not). Measured: medians
 //     -0.93 m and +2.95 m on the SRTM scenes, 0.000 m on the smooth synthetic one; the SRTM
 //     offsets are not explained yet (mipmapped grid samples on rough terrain are suspected).
+//  C. The cursor readout (vtkGlobePointPicker) in the Rainier scene at 25 pixels: lon, lat,
+//     ellipsoidal height against the depth buffer unprojected here (1 mm), the orthometric
+//     height against h - N of PROJ (1 mm), the terrain and the distance from the camera.
 #include "vtkGlobeRenderingTestHelpers.h"
 #include "vtkGlobeTestHelpers.h"
 
 #include "vtkGlobeGeoid.h"
+#include "vtkGlobePointPicker.h"
 #include "vtkGlobeTerrain.h"
 
 #include <proj.h>
@@ -185,6 +189,52 @@ void PartRules()
   expect(terrain, centre[0] + 2.5 / 64.0, centre[1], 1000.0, "two and a half texels east");
 }
 
+// C. The cursor readout: vtkGlobePointPicker at 25 pixels against the depth buffer
+// unprojected here (double) and PROJ's N.
+void PartPick(vtkGlobeTest::Scene& scene)
+{
+  vtkNew<vtkGlobePointPicker> picker;
+  const std::vector<std::array<double, 3>> pixels = vtkGlobeTest::GeodeticPixels(scene);
+  const int* size = scene.Window->GetSize();
+  const double* eye = scene.Renderer->GetActiveCamera()->GetPosition();
+  double worstPosition = 0.0, worstOrthometric = 0.0, worstTerrain = 0.0, worstDistance = 0.0;
+  int hits = 0;
+  for (int j = 0; j < 5; ++j)
+  {
+    for (int i = 0; i < 5; ++i)
+    {
+      const int x = (2 * i + 1) * size[0] / 10, y = (2 * j + 1) * size[1] / 10;
+      const auto& want = pixels[static_cast<size_t>(y) * size[0] + x];
+      // The pixel's centre, where GeodeticPixels unprojects it.
+      picker->Pick(x + 0.5, y + 0.5, 0.0, scene.Renderer);
+      if (!std::isfinite(want[2]) || !picker->GetGeodeticHit())
+      {
+        continue;
+      }
+      ++hits;
+      const double* got = picker->GetPickGeodetic();
+      double a[3], b[3];
+      scene.Body->GeodeticToCartesian(got, a);
+      scene.Body->GeodeticToCartesian(want.data(), b);
+      worstPosition = std::max(worstPosition, std::sqrt(vtkMath::Distance2BetweenPoints(a, b)));
+      worstOrthometric = std::max(worstOrthometric,
+        std::abs(picker->GetPickOrthometricHeight() - (want[2] - ProjUndulation(want[0], want[1]))));
+      worstTerrain = std::max(worstTerrain,
+        std::abs(picker->GetPickTerrainHeight() - scene.Mapper->GetTerrain()->GetHeight(want[0], want[1])));
+      worstDistance = std::max(worstDistance,
+        std::abs(picker->GetPickDistance() - std::sqrt(vtkMath::Distance2BetweenPoints(eye, b))));
+    }
+  }
+  char text[300];
+  std::snprintf(text, sizeof(text),
+    "C. picking readout at %d of 25 pixels: position within %.2g m, orthometric height (h - "
+    "N(PROJ)) within %.2g m, terrain within %.2g m, distance within %.2g m (bounds 1 mm)",
+    hits, worstPosition, worstOrthometric, worstTerrain, worstDistance);
+  Check.Expect(hits >= 20 && worstPosition <= 1e-3 && worstOrthometric <= 1e-3 &&
+      worstTerrain <= 1e-3 && worstDistance <= 1e-3,
+    text);
+}
+
 void PartGPU()
 {
   std::printf("B. The query against the depth buffer, every second pixel:\n");
@@ -271,6 +321,10 @@ void PartGPU()
     std::snprintf(text, sizeof(text), "%s: median of h - query over %zu pixels %.3f m (bound 5 m)",
       c.Name, signedErrors.size(), median);
     Check.Expect(std::abs(median) <= 5.0, text);
+    if (c.Layers == 0)
+    {
+      PartPick(scene);
+    }
   }
 }
 } // namespace
