@@ -73,6 +73,9 @@ list(APPEND globe_rendering_tests
 list(APPEND globe_rendering_tests
   TestGlobeTerrainQuery.cxx
   TestGlobeTerrainClamp.cxx)
+# Draped lines without gaps at 1 km and 100 km (vtkGlobeTerrainClamp + vtkGlobeDepthOffset).
+list(APPEND globe_rendering_tests
+  TestGlobeDrapedTrack.cxx)
 
 create_test_sourcelist(_globe_rendering_driver_sources GlobeRenderingCxxTests.cxx
   ${globe_rendering_tests}
