@@ -76,6 +76,9 @@ list(APPEND globe_rendering_tests
 # Draped lines without gaps at 1 km and 100 km (vtkGlobeTerrainClamp + vtkGlobeDepthOffset).
 list(APPEND globe_rendering_tests
   TestGlobeDrapedTrack.cxx)
+# Camera helpers: look at (lon, lat, height) by heading, tilt and range; fly-to views.
+list(APPEND globe_rendering_tests
+  TestGlobeCamera.cxx)
 
 create_test_sourcelist(_globe_rendering_driver_sources GlobeRenderingCxxTests.cxx
   ${globe_rendering_tests}
