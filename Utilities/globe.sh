@@ -28,6 +28,8 @@
 #                                     (ctest args pass on)
 #   Utilities/globe.sh pvpython script.py [args]   the same set-up, then run a script with that
 #                                     ParaView's pvpython (VTKGLOBE_PARAVIEW_PLUGIN names the plugin)
+#   Utilities/globe.sh pvbatch RANKS script.py [args]   the same with RANKS processes of
+#                                     pvbatch --symmetric under Open MPI's mpiexec
 #
 # `test` also runs the CI's sanitizer subset (Core and the fuzz corpus replays, build-check-core/;
 # VTKGLOBE_SANITIZER_TESTS=0 skips it). Documentation/reliability.md, "Fuzzing and sanitizers".
@@ -194,6 +196,47 @@ build_paraview_plugin() {
   fi
   echo "== building the ParaView plugin"
   cmake --build "$paraview_obj" --parallel "$(nproc)"
+}
+
+# Set-up, build and tests of the plugin, each timed (ctest args pass on).
+run_paraview() {
+  local start status=0
+  start=$(date +%s)
+  setup_paraview
+  echo "== ParaView set up in $(( $(date +%s) - start )) s"
+  start=$(date +%s)
+  build_paraview_plugin
+  echo "== plugin built in $(( $(date +%s) - start )) s"
+  start=$(date +%s)
+  echo "== running the ParaView tests"
+  (cd "$paraview_obj" && with_display ctest --output-on-failure --timeout 900 "$@") || status=$?
+  echo "== ParaView tests ran in $(( $(date +%s) - start )) s"
+  return "$status"
+}
+
+# pvpython or pvbatch (under mpiexec) of the private ParaView, with the plugin, under a display.
+run_paraview_program() {
+  local program="$1"
+  shift
+  setup_paraview >&2
+  build_paraview_plugin >&2
+  local pv="$paraview_prefix/usr"
+  local lib="$pv/lib/$(gcc -print-multiarch)"
+  local pv_env=(LD_LIBRARY_PATH="$lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+    PYTHONPATH="$pv/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}"
+    VTKGLOBE_PARAVIEW_PLUGIN="$paraview_obj/lib/paraview-5.11/plugins/VTKGlobe/VTKGlobe.so"
+    VTKGLOBE_DATA_DIR="$root/Data")
+  if [ "$program" = pvpython ]; then
+    with_display env "${pv_env[@]}" "$pv/bin/pvpython" --force-offscreen-rendering "$@"
+  else
+    # RANKS processes of pvbatch --symmetric (every rank runs the script) under Open MPI.
+    local ranks="${1:?usage: globe.sh pvbatch RANKS script.py [args]}"
+    shift
+    local mpi_flags=(--oversubscribe)
+    if [ "$(id -u)" -eq 0 ]; then mpi_flags+=(--allow-run-as-root); fi
+    with_display env "${pv_env[@]}" mpiexec "${mpi_flags[@]}" -n "$ranks" \
+      "$pv/bin/pvbatch" --symmetric --force-offscreen-rendering "$@"
+  fi
 }
 
 # Runs a command with a display: the user's, or a private Xvfb server (Mesa's llvmpipe gives
@@ -370,28 +413,15 @@ case "$command" in
     ;;
   paraview)
     install_packages
-    start=$(date +%s)
-    setup_paraview
-    echo "== ParaView set up in $(( $(date +%s) - start )) s"
-    start=$(date +%s)
-    build_paraview_plugin
-    echo "== plugin built in $(( $(date +%s) - start )) s"
-    start=$(date +%s)
-    echo "== running the ParaView tests"
-    status=0
-    (cd "$paraview_obj" && with_display ctest --output-on-failure --timeout 900 "$@") || status=$?
-    echo "== ParaView tests ran in $(( $(date +%s) - start )) s"
-    exit "$status"
+    run_paraview "$@"
     ;;
   pvpython)
     install_packages >&2
-    setup_paraview >&2
-    build_paraview_plugin >&2
-    pv="$paraview_prefix/usr"
-    with_display env LD_LIBRARY_PATH="$pv/lib/$(gcc -print-multiarch)${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" \
-      PYTHONPATH="$pv/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}" \
-      VTKGLOBE_PARAVIEW_PLUGIN="$paraview_obj/lib/paraview-5.11/plugins/VTKGlobe/VTKGlobe.so" \
-      "$pv/bin/pvpython" --force-offscreen-rendering "$@"
+    run_paraview_program pvpython "$@"
+    ;;
+  pvbatch)
+    install_packages >&2
+    run_paraview_program pvbatch "$@"
     ;;
   python)
     install_packages >&2
@@ -401,7 +431,7 @@ case "$command" in
       /usr/bin/python3 "$@"
     ;;
   *)
-    echo "usage: $0 demo|test|check|check-core|fuzz|bench|bench-streaming|build|prepare|python|paraview|pvpython [args]" >&2
+    echo "usage: $0 demo|test|check|check-core|fuzz|bench|bench-streaming|build|prepare|python|paraview|pvpython|pvbatch [args]" >&2
     exit 2
     ;;
 esac

@@ -129,7 +129,9 @@ class TestUserGuideSnippets(unittest.TestCase):
             for command in code.splitlines():
                 for sub in re.findall(r"Utilities/globe\.sh (\w+)", command):
                     self.assertIn(sub, subcommands, "user-guide.md:%d: globe.sh %s" % (line, sub))
-                for path in re.findall(r"\b((?:Examples|Utilities|Testing)/[\w/.]+)", command):
+                # Whole paths only (not Testing/... inside Plugins/ParaView/Testing/...).
+                paths = r"(?<![\w/.])((?:Examples|Utilities|Testing|Plugins)/[\w/.]+)"
+                for path in re.findall(paths, command):
                     self.assertTrue(os.path.exists(os.path.join(SOURCE, path)),
                                     "user-guide.md:%d: %s does not exist" % (line, path))
 

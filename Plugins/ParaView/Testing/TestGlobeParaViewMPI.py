@@ -1,0 +1,86 @@
+"""The Globe Raster Reader under MPI: 2 ranks of pvbatch --symmetric (mpirun), each running this
+script.
+
+- There are 2 ranks (run without mpirun, the test fails).
+- Each rank's piece of relief_2deg.tif lies inside the whole extent and holds, at every point,
+  the value ParaView's GDAL reader (vtkGDALRasterReader, read on that rank) has there.
+- The ranks' pieces together cover the whole raster.
+- The data information ParaView gathers to rank 0 equals the one-process numbers of
+  TestGlobeParaViewReader: extent 0..179 x 0..89, 16,200 points, range -6526.54 .. 5211.51.
+
+How the raster is split is printed, not asserted: today rank 0 reads it all and rank 1 gets an
+empty piece (vtkGlobeRasterReader does not announce CAN_PRODUCE_SUB_EXTENT, so the executive
+asks only piece 0 for data); a reader that reads sub-extents passes the same checks.
+"""
+import os
+
+from mpi4py import MPI
+from paraview.simple import LoadPlugin
+from vtkmodules.vtkIOGDAL import vtkGDALRasterReader
+
+comm = MPI.COMM_WORLD
+PLUGIN = os.environ["VTKGLOBE_PARAVIEW_PLUGIN"]
+DATA = os.environ["VTKGLOBE_DATA_DIR"]
+failures = []
+
+
+def expect(condition, what):
+    print("rank %d: %s %s" % (comm.rank, "ok  " if condition else "FAIL", what))
+    if not condition:
+        failures.append(what)
+
+
+expect(comm.size == 2, "%d MPI ranks" % comm.size)
+LoadPlugin(PLUGIN, remote=False, ns=globals())
+relief_file = os.path.join(DATA, "earth", "relief_2deg.tif")
+relief = GlobeRasterReader(FileName=relief_file)  # noqa: F821 (defined by LoadPlugin)
+relief.UpdatePipeline()
+
+# This rank's piece, against GDAL's reading of the same file (cell (i, j) = our point (i, j)).
+piece = relief.GetClientSideObject().GetOutput()
+extent = piece.GetExtent()
+gdal = vtkGDALRasterReader()
+gdal.SetFileName(relief_file)
+gdal.Update()
+ref = gdal.GetOutput().GetCellData().GetArray("Elevation")
+values = piece.GetPointData().GetScalars()
+inside = extent[0] >= 0 and extent[1] <= 179 and extent[2] >= 0 and extent[3] <= 89
+differ, compared = 0, 0
+if piece.GetNumberOfPoints() > 0 and values is not None:
+    width = extent[1] - extent[0] + 1
+    for j in range(extent[2], extent[3] + 1):
+        for i in range(extent[0], extent[1] + 1):
+            compared += 1
+            ours = values.GetValue((j - extent[2]) * width + (i - extent[0]))
+            differ += ours != ref.GetValue(j * 180 + i)
+expect(piece.GetNumberOfPoints() == 0 or (inside and compared == piece.GetNumberOfPoints()
+                                          and differ == 0),
+       "piece extent %s, %d points, %d compared with GDAL's, %d differ"
+       % (extent, piece.GetNumberOfPoints(), compared, differ))
+
+# Together the pieces cover the raster.
+extents = comm.allgather(extent if piece.GetNumberOfPoints() > 0 else None)
+covered = set()
+for e in extents:
+    if e is not None:
+        covered.update((i, j) for i in range(e[0], e[1] + 1) for j in range(e[2], e[3] + 1))
+expect(len(covered) == 16200 and all(0 <= i < 180 and 0 <= j < 90 for i, j in covered),
+       "the pieces %s cover %d of the 16,200 points" % (extents, len(covered)))
+
+# What ParaView gathers on rank 0.
+info = relief.GetDataInformation()
+if comm.rank == 0:
+    array = relief.PointData["Values"]
+    value_range = array.GetRange() if array is not None else None
+    expect(tuple(info.GetExtent()) == (0, 179, 0, 89, 0, 0) and
+           info.GetNumberOfPoints() == 16200 and value_range is not None and
+           abs(value_range[0] + 6526.538) < 1e-3 and abs(value_range[1] - 5211.506) < 1e-3,
+           "gathered data information: extent %s, %d points, range %s"
+           % (tuple(info.GetExtent()), info.GetNumberOfPoints(), value_range))
+
+total = comm.allreduce(len(failures))
+print("rank %d: %d failure(s) on all ranks" % (comm.rank, total))
+# Not sys.exit: pvbatch must reach MPI_Finalize, or mpiexec reports an abnormal end. An
+# exception ends the script with pvbatch's exit code 1 on every rank.
+if total:
+    raise AssertionError("%d failure(s)" % total)
