@@ -33,6 +33,7 @@
 #
 # `test` also runs the CI's sanitizer subset (Core and the fuzz corpus replays, build-check-core/;
 # VTKGLOBE_SANITIZER_TESTS=0 skips it). Documentation/reliability.md, "Fuzzing and sanitizers".
+# Then `paraview`'s set-up, build and tests (VTKGLOBE_PARAVIEW_TESTS=0 skips them).
 #
 # Environment: VTKGLOBE_BUILD_DIR (default: build/ in the source tree), VTKGLOBE_CHECK_DIR
 # (build-check/), VTKGLOBE_CHECK_CORE_DIR (build-check-core/), VTKGLOBE_FUZZ_DIR (build-fuzz/),
@@ -272,6 +273,9 @@ case "$command" in
     (cd "$build" && with_display ctest --output-on-failure --timeout 900 "$@")
     if [ "${VTKGLOBE_SANITIZER_TESTS:-1}" != 0 ]; then
       run_sanitizer_ci
+    fi
+    if [ "${VTKGLOBE_PARAVIEW_TESTS:-1}" != 0 ]; then
+      run_paraview
     fi
     ;;
   check-core)
