@@ -394,7 +394,8 @@ double vtkGlobeTerrain::GetHeight(double lon, double lat)
   {
     return std::nan("");
   }
-  lat = std::max(-90.0, std::min(90.0, lat));
+  // A latitude beyond +-90 degrees lies outside every layer (as the GPU's texture coordinates
+  // put it): the composition's 0 there, not the pole's height.
   double h = 0.0, sumW = 0.0, sumV = 0.0;
   for (size_t i = 0; i < in.Order.size(); ++i)
   {

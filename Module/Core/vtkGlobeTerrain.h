@@ -80,7 +80,8 @@ public:
   /// streamed layers.
   void Update();
 
-  /// The composed ellipsoidal height (m) at (lon, lat) in degrees; 0 without height layers.
+  /// The composed ellipsoidal height (m) at (lon, lat) in degrees; 0 without height layers
+  /// and at latitudes beyond +-90 degrees (outside every layer); NaN for NaN input.
   double GetHeight(double lon, double lat);
 
   /**
