@@ -1238,6 +1238,7 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
           s << "    float v;\n    vec4 ewns;\n"
             << "    globe_pageHeights(globePagesHeights, " << p << "Table, " << p
             << "Pyramid, st" << n << ", dx, dy, "
+            << (e->Function.empty() ? "min(1.0, 10.0 * cosLat)" : "1.0") << ", "
             << (layer->GetInterpolation() == vtkGlobeLayer::Nearest ? "true" : "false")
             << ", v, ewns);\n"
             << "    float vE = ewns.x, vW = ewns.y, vN = ewns.z, vS = ewns.w;\n";
@@ -1439,7 +1440,19 @@ void vtkGlobeLayerSet::RequestPages(vtkDoubleArray* footprints, int blockPixels,
         {
           continue;
         }
-        const double rho = std::max(std::hypot(du[0] * W, du[1] * H), std::hypot(dv[0] * W, dv[1] * H));
+        // The footprint's level as the shader chooses it: the longer screen axis
+        // (globe_pageLod); for geographic height layers within 6 degrees of a pole, down to
+        // the Jacobian's shorter axis (globe_pageLodHeights).
+        const double ax = du[0] * W, ay = du[1] * H, bx = dv[0] * W, by = dv[1] * H;
+        double rho = std::max(std::hypot(ax, ay), std::hypot(bx, by));
+        const double stretch = std::min(1.0, 10.0 * std::cos(f[1]));
+        if (height && e->Function.empty() && stretch < 1.0)
+        {
+          const double t = ax * ax + ay * ay + bx * bx + by * by;
+          const double det = std::abs(ax * by - ay * bx);
+          const double major = std::sqrt(0.5 * t + std::sqrt(std::max(0.25 * t * t - det * det, 0.0)));
+          rho = std::max(det / std::max(major, 1e-300), rho * stretch);
+        }
         const double lod = std::log2(std::max(rho, 1e-30));
         auto ask = [&](double at) {
           // Linear filtering blends floor(lod) and the level above; nearest takes the
