@@ -415,21 +415,10 @@ bool vtkGlobeInteractorStyle::Prepare(int x, int y)
   {
     return false;
   }
-  this->ActiveMapper = this->Mapper;
-  this->GlobeActor = nullptr;
-  vtkActorCollection* actors = renderer->GetActors();
-  vtkCollectionSimpleIterator it;
-  actors->InitTraversal(it);
-  while (vtkActor* actor = actors->GetNextActor(it))
-  {
-    auto* mapper = vtkGlobeMapper::SafeDownCast(actor->GetMapper());
-    if (mapper && (this->Mapper ? mapper == this->Mapper : actor->GetVisibility() != 0))
-    {
-      this->ActiveMapper = mapper;
-      this->GlobeActor = actor;
-      break;
-    }
-  }
+  this->GlobeActor = vtkGlobeMapper::FindGlobeActor(renderer, this->Mapper);
+  this->ActiveMapper = this->GlobeActor
+    ? vtkGlobeMapper::SafeDownCast(this->GlobeActor->GetMapper())
+    : this->Mapper;
   if (!this->ActiveMapper)
   {
     return false;

@@ -1,6 +1,7 @@
 #include "vtkGlobeMapper.h"
 
 #include "vtkActor.h"
+#include "vtkActorCollection.h"
 #include "vtkCamera.h"
 #include "vtkGlobeClippingRange.h" // depth: clipping policy
 #include "vtkGlobeCompositePass.h"
@@ -686,6 +687,27 @@ void vtkGlobeMapper::DiagnoseCamera(vtkRenderer* ren, const double eyeBody[3], d
       distance, diameter / pixel);
     message = text;
   }
+}
+
+//------------------------------------------------------------------------------
+vtkActor* vtkGlobeMapper::FindGlobeActor(vtkRenderer* renderer, vtkGlobeMapper* mapper)
+{
+  if (!renderer)
+  {
+    return nullptr;
+  }
+  vtkActorCollection* actors = renderer->GetActors();
+  vtkCollectionSimpleIterator it;
+  actors->InitTraversal(it);
+  while (vtkActor* actor = actors->GetNextActor(it))
+  {
+    auto* globe = vtkGlobeMapper::SafeDownCast(actor->GetMapper());
+    if (globe && (mapper ? globe == mapper : actor->GetVisibility() != 0))
+    {
+      return actor;
+    }
+  }
+  return nullptr;
 }
 
 //------------------------------------------------------------------------------

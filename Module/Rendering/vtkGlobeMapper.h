@@ -84,6 +84,13 @@ public:
   static double GetDefaultPlausibleFraction() { return 0.05; }
   ///@}
 
+  /**
+   * The actor of a globe in a renderer: the one whose mapper is `mapper`, or without one the
+   * first visible actor with a vtkGlobeMapper; nullptr when there is none. Picking and the
+   * interactor style find their globe this way.
+   */
+  static vtkActor* FindGlobeActor(vtkRenderer* renderer, vtkGlobeMapper* mapper = nullptr);
+
   ///@{
   /// Layers, composed bottom first (see vtkGlobeLayerSet).
   void AddLayer(vtkGlobeLayer* layer);

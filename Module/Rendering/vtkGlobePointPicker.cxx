@@ -86,19 +86,7 @@ void vtkGlobePointPicker::ComputeGeodetic(vtkRenderer* renderer)
     return;
   }
   // The globe and its actor: the mapper set, or the first visible globe.
-  vtkActor* globe = nullptr;
-  vtkActorCollection* actors = renderer->GetActors();
-  vtkCollectionSimpleIterator it;
-  actors->InitTraversal(it);
-  while (vtkActor* actor = actors->GetNextActor(it))
-  {
-    auto* mapper = vtkGlobeMapper::SafeDownCast(actor->GetMapper());
-    if (mapper && (this->Mapper ? mapper == this->Mapper : actor->GetVisibility() != 0))
-    {
-      globe = actor;
-      break;
-    }
-  }
+  vtkActor* globe = vtkGlobeMapper::FindGlobeActor(renderer, this->Mapper);
   if (!globe)
   {
     return;
