@@ -15,6 +15,8 @@
  * local vertical as view-up (never rolled; north when looking straight down). It does not
  * reset the clipping range: call renderer->ResetCameraClippingRange() (vtkGlobeClippingRange).
  *
+ * FrameExtent gives the nadir view that frames a geographic extent (a layer's, say).
+ *
  * InterpolateView gives the view at fraction t of a fly-to: longitude and latitude along the
  * shorter way, heading the shorter turn, height and tilt linearly, the range geometrically and
  * raised in the middle by the distance covered (sin(pi t) times half the chord between the two
@@ -43,6 +45,19 @@ public:
   static bool LookAt(vtkCamera* camera, vtkGlobeEllipsoid* body, const double view[6]);
   static bool LookAt(vtkCamera* camera, vtkGlobeEllipsoid* body, double lon, double lat,
     double height, double heading, double tilt, double range);
+
+  /**
+   * The view straight down (heading 0, tilt 0) on the centre of a geographic extent (west,
+   * east, south, north in degrees; west > east crosses 180 degrees) at `height`, from the
+   * shortest range at which the extent, sampled 17 x 17 at that height, fits a perspective
+   * camera of vertical view angle `viewAngle` (degrees) and aspect width / height, with 5 %
+   * to spare. The centre is the direction of the samples' mean (a polar cap's is its pole).
+   * Points near or past the body's horizon cannot be framed: an extent reaching more than 60
+   * degrees around the body from its centre gets the whole body's disc instead. False (with an error) for a missing body or a
+   * bad extent, angle or aspect. E.g. a layer's extent (vtkGlobeLayer::GetGeographicExtent).
+   */
+  static bool FrameExtent(vtkGlobeEllipsoid* body, const double extent[4], double height,
+    double viewAngle, double aspect, double view[6]);
 
   /// The view at fraction t in [0, 1] of a fly-to from `from` to `to` (see above).
   static void InterpolateView(vtkGlobeEllipsoid* body, const double from[6], const double to[6],

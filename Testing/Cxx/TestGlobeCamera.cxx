@@ -10,9 +10,11 @@
 #include "vtkGlobeTestHelpers.h"
 
 #include "vtkCamera.h"
+#include "vtkCommand.h"
 #include "vtkGlobeCamera.h"
 #include "vtkGlobeEllipsoid.h"
 #include "vtkMath.h"
+#include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkTestErrorObserver.h"
 
@@ -104,5 +106,53 @@ int TestGlobeCamera(int, char*[])
   const double bad[6] = { 0.0, 0.0, 0.0, 0.0, 90.0, 100.0 };
   Check.Expect(!vtkGlobeCamera::LookAt(camera, wgs84, bad) && errors->GetError(),
     "a tilt of 90 degrees is refused with an error");
+  // Framing an extent: every sample of its boundary inside the view, and the view no wider
+  // than needed (some sample within 10 % of the edge of the normalized view).
+  struct Frame
+  {
+    const char* Name;
+    double Extent[4];
+    double Height, Aspect;
+  };
+  const Frame frames[] = { { "Rainier inset", { -122.0, -121.0, 46.0, 47.0 }, 0.0, 4.0 / 3.0 },
+    { "across 180 degrees", { 170.0, -170.0, -10.0, 5.0 }, 0.0, 1.0 },
+    { "polar cap", { -180.0, 180.0, 70.0, 90.0 }, 0.0, 0.5 },
+    { "a tall, narrow strip", { 10.0, 11.0, -40.0, 40.0 }, 1000.0, 2.0 } };
+  for (const Frame& f : frames)
+  {
+    double view[6];
+    const bool ok = vtkGlobeCamera::FrameExtent(wgs84, f.Extent, f.Height, 30.0, f.Aspect, view);
+    vtkNew<vtkCamera> framing;
+    framing->SetViewAngle(30.0);
+    vtkGlobeCamera::LookAt(framing, wgs84, view);
+    framing->SetClippingRange(1.0, 1e8);
+    vtkMatrix4x4* m = framing->GetCompositeProjectionTransformMatrix(f.Aspect, -1.0, 1.0);
+    double extreme = 0.0;
+    for (int j = 0; j <= 20; ++j)
+    {
+      for (int i = 0; i <= 20; ++i)
+      {
+        double span = std::fmod(f.Extent[1] - f.Extent[0], 360.0);
+        span = span <= 0.0 ? span + 360.0 : span;
+        double p[4] = { 0, 0, 0, 1 };
+        wgs84->GeodeticToCartesian(f.Extent[0] + span * i / 20.0,
+          f.Extent[2] + (f.Extent[3] - f.Extent[2]) * j / 20.0, f.Height, p);
+        m->MultiplyPoint(p, p);
+        extreme = std::max({ extreme, std::abs(p[0] / p[3]), std::abs(p[1] / p[3]) });
+      }
+    }
+    std::snprintf(text, sizeof(text),
+      "FrameExtent, %s: range %.0f m, every boundary sample in view (largest |ndc| %.3f <= 1, "
+      "and >= 0.9: tight)",
+      f.Name, view[5], extreme);
+    Check.Expect(ok && extreme <= 1.0 && extreme >= 0.9, text);
+  }
+  const double badExtent[4] = { 0.0, 10.0, 20.0, 10.0 };
+  double unused[6];
+  vtkNew<vtkTest::ErrorObserver> bodyErrors;
+  wgs84->AddObserver(vtkCommand::ErrorEvent, bodyErrors);
+  Check.Expect(!vtkGlobeCamera::FrameExtent(wgs84, badExtent, 0.0, 30.0, 1.0, unused) &&
+      bodyErrors->GetError(),
+    "FrameExtent refuses an extent whose south lies north of its north, with an error");
   return Check.Result();
 }
