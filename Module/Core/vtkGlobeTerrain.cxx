@@ -206,7 +206,7 @@ struct vtkGlobeTerrain::vtkInternals
     if (c.Projection)
     {
       double xy[2];
-      if (!c.Projection->IsInValidDomain(lon, lat) || !c.Projection->Forward(lon, lat, xy))
+      if (!c.Projection->ForwardInDomain(lon, lat, xy))
       {
         return false;
       }

@@ -827,7 +827,10 @@ LonLat At(bool highPrecision, const char* dLon = nullptr, const char* dLat = nul
 }
 
 // The GLSL expression of a layer's texture coordinates at (lon hi + lo, lat hi + lo).
-std::string UV(const Entry* e, const std::string& p, const LonLat& c, bool highPrecision)
+// offsetOnly (projected layers): the projection's offset from its reference point instead,
+// unwrapped (the function called with a zero reference, p2.xy = 0).
+std::string UV(const Entry* e, const std::string& p, const LonLat& c, bool highPrecision,
+  bool offsetOnly = false)
 {
   if (e->Function.empty())
   {
@@ -842,10 +845,11 @@ std::string UV(const Entry* e, const std::string& p, const LonLat& c, bool highP
   std::string call = e->Function + "(" + c.LonHi + ", " + c.LonLo + ", " + c.LatHi + ", " + c.LatLo;
   for (int k = 0; k < 7; ++k)
   {
-    call += ", " + p + "Projection[" + std::to_string(k) + "]";
+    call += offsetOnly && k == 2 ? ", vec4(0.0, 0.0, " + p + "Projection[2].zw)"
+                                 : ", " + p + "Projection[" + std::to_string(k) + "]";
   }
   // A wrapping projected layer's u may round just past 0 or 1 at the antimeridian.
-  return e->Wraps ? "globe_wrapU(" + call + "))" : call + ")";
+  return e->Wraps && !offsetOnly ? "globe_wrapU(" + call + "))" : call + ")";
 }
 
 // Declares a streamed layer's texture coordinates uv<i> and its level-0 texel coordinates
@@ -874,13 +878,7 @@ void EmitStreamedCoordinates(std::ostream& s, const Entry* e, const std::string&
     }
     return;
   }
-  std::string call = e->Function + "(" + c.LonHi + ", " + c.LonLo + ", " + c.LatHi + ", " + c.LatLo;
-  for (int k = 0; k < 7; ++k)
-  {
-    call += k == 2 ? ", vec4(0.0, 0.0, " + p + "Projection[2].zw)"
-                   : ", " + p + "Projection[" + std::to_string(k) + "]";
-  }
-  s << "  vec2 d" << n << " = " << call << ");\n"
+  s << "  vec2 d" << n << " = " << UV(e, p, c, hp, true) << ";\n"
     << "  vec2 uv" << n << " = globe_projectionInDomain(" << c.LonHi << " + " << c.LonLo << ", "
     << c.LatHi << " + " << c.LatLo << ", " << p << "Projection[4]) ? " << p
     << "Projection[2].xy + d" << n << " : vec2(-1.0);\n";
