@@ -6,6 +6,8 @@
 #   Utilities/globe.sh test [args]    build, then run the whole test suite (ctest args pass on)
 #   Utilities/globe.sh bench [args]   build, then run the benchmark (table + build/benchmark.json)
 #                                     and plot it (Documentation/accuracy-vs-time.md, images/)
+#   Utilities/globe.sh bench-cost [args]   build, then measure out-of-view layers, the data's
+#                                     size and the automatic grid (build/cost.json)
 #   Utilities/globe.sh bench-streaming [args]   build, make the global rasters of the
 #                                     streaming flight (GlobeMakePlanet, widths from
 #                                     VTKGLOBE_PLANET_WIDTHS, kept in VTKGLOBE_PLANET_DIR), fly them
@@ -384,6 +386,14 @@ case "$command" in
       /usr/bin/python3 "$root/Utilities/plot_benchmark.py" "$build/benchmark.json" \
       --images "$images" "${report[@]}"
     ;;
+  bench-cost)
+    install_packages
+    build_project
+    echo "== what the frame costs against what it shows (GlobeCostBenchmark; glibc malloc tuned)"
+    with_display env \
+      GLIBC_TUNABLES=glibc.malloc.mmap_threshold=268435456:glibc.malloc.trim_threshold=536870912 \
+      "$build/bin/GlobeCostBenchmark" --json "$build/cost.json" "$@"
+    ;;
   bench-streaming)
     install_packages
     build_project
@@ -435,7 +445,7 @@ case "$command" in
       /usr/bin/python3 "$@"
     ;;
   *)
-    echo "usage: $0 demo|test|check|check-core|fuzz|bench|bench-streaming|build|prepare|python|paraview|pvpython|pvbatch [args]" >&2
+    echo "usage: $0 demo|test|check|check-core|fuzz|bench|bench-cost|bench-streaming|build|prepare|python|paraview|pvpython|pvbatch [args]" >&2
     exit 2
     ;;
 esac

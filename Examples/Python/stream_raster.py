@@ -70,7 +70,7 @@ def main(argv=None):
         print("error: %s cannot be streamed (see the message above)" % args.raster, file=sys.stderr)
         return 1
     print("%s: %dx%d %s, %d levels of %d-texel pages" % (
-        args.raster, layer.GetWidth(), layer.GetHeight(), role,
+        args.raster, layer.GetNumberOfColumns(), layer.GetNumberOfRows(), role,
         layer.GetPageSource().GetNumberOfLevels(), layer.GetPageSource().GetPageSize()))
 
     globe_scene.require_display()

@@ -90,8 +90,8 @@ def projection_of(layer, path=None):
     # The raster's middle must map to a place in the projection's domain and back to itself.
     origin, pixel = [0.0] * 2, [0.0] * 2
     layer.GetProjectedGeoTransform(origin, pixel)
-    middle = (origin[0] + 0.5 * pixel[0] * layer.GetWidth(),
-              origin[1] - 0.5 * pixel[1] * layer.GetHeight())
+    middle = (origin[0] + 0.5 * pixel[0] * layer.GetNumberOfColumns(),
+              origin[1] - 0.5 * pixel[1] * layer.GetNumberOfRows())
     lonlat, back = [0.0] * 2, [0.0] * 2
     if not (projection.Inverse(middle[0], middle[1], lonlat)
             and projection.IsInValidDomain(*lonlat) and projection.Forward(*lonlat, back)
@@ -116,7 +116,7 @@ def footprint(layer, samples=64):
     origin, pixel = [0.0] * 2, [0.0] * 2
     layer.GetProjectedGeoTransform(origin, pixel)
     west, north = origin
-    east, south = west + layer.GetWidth() * pixel[0], north - layer.GetHeight() * pixel[1]
+    east, south = west + layer.GetNumberOfColumns() * pixel[0], north - layer.GetNumberOfRows() * pixel[1]
     lonlat = [0.0] * 2
 
     def inverse(x, y):
@@ -221,7 +221,7 @@ def main(argv=None):
     projected = layer.GetModelType() != vtkGlobeLayer.Geographic
     reprojected = layer.GetReprojectedFromEPSG()
     print("%s: %dx%d %s raster%s, lon [%.6f, %.6f], lat [%.6f, %.6f]" % (
-        args.geotiff, layer.GetWidth(), layer.GetHeight(), layer.GetRoleAsString().lower(),
+        args.geotiff, layer.GetNumberOfColumns(), layer.GetNumberOfRows(), layer.GetRoleAsString().lower(),
         " in EPSG:%d" % layer.GetEPSG() if projected else
         (" reprojected from EPSG:%d" % reprojected if reprojected else ""), *extent))
     globe_scene.require_display()

@@ -143,9 +143,11 @@ public:
   ///@}
 
   /**
-   * The general (triaxial) nearest-surface-point solver, exposed for tests: writes the
-   * surface point nearest to xyz and returns the number of root-finder iterations, or -1
-   * for non-finite input or radii.
+   * The point of the surface nearest to xyz (the foot of the surface normal through it), for
+   * any radii, triaxial included: writes it and returns the number of root-finder iterations,
+   * or -1 for non-finite input or radii. Public on purpose: it is the direct answer to "where
+   * is the ground below this point", cheaper than CartesianToGeodetic followed by
+   * GeodeticToCartesian, and the iteration count lets a caller see how hard the point was.
    */
   static int NearestSurfacePoint(const double radii[3], const double xyz[3], double surface[3]);
 

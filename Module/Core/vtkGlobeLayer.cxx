@@ -713,6 +713,18 @@ void vtkGlobeLayer::UseFileNoDataValue()
 }
 
 //------------------------------------------------------------------------------------------
+int* vtkGlobeLayer::GetDimensions()
+{
+  this->GetDimensions(this->Dimensions);
+  return this->Dimensions;
+}
+
+void vtkGlobeLayer::GetDimensions(int dimensions[2])
+{
+  dimensions[0] = this->RasterWidth;
+  dimensions[1] = this->RasterHeight;
+}
+
 vtkDataArray* vtkGlobeLayer::GetData()
 {
   return this->Valid ? this->Internals->Data.Get() : nullptr;
@@ -818,6 +830,14 @@ bool vtkGlobeLayer::Update()
     return executive->GetPipelineMTime();
   };
   now.UpstreamTime = upstreamTime();
+  // True when the last load differs from `now` only in ValueScale and ValueOffset: the loaded
+  // values (or stored pages) can be mapped instead of read again.
+  const auto onlyValueMapChanged = [&]() {
+    vtkInternals::Settings rescaled = in.LastLoad;
+    rescaled.ValueScale = now.ValueScale;
+    rescaled.ValueOffset = now.ValueOffset;
+    return this->Valid && now.Role == Height && now == rescaled;
+  };
   // What a failed attempt depended on; InputTime is left out: a failed run leaves no new data
   // to compare, and the upstream time is taken after the attempt's own Modified().
   const auto recordFailure = [&]() {
@@ -887,6 +907,12 @@ bool vtkGlobeLayer::Update()
     {
       return true;
     }
+    if (in.Streamed && onlyValueMapChanged() &&
+      this->StoredPagesMap(now.ValueScale, now.ValueOffset))
+    {
+      in.LastLoad = now; // the stored pages stay, mapped when read
+      return true;
+    }
     this->InvokeEvent(vtkCommand::StartEvent); // page readers let go of this layer
     ++this->NumberOfLoads;
     this->Invalidate();
@@ -924,6 +950,12 @@ bool vtkGlobeLayer::Update()
   {
     return true; // nothing the data depends on changed (e.g. only the Name)
   }
+  if (!in.Streamed && onlyValueMapChanged() &&
+    this->Rescale(in.LastLoad.ValueScale, in.LastLoad.ValueOffset))
+  {
+    in.LastLoad = now; // the heights were mapped in place, nothing read
+    return true;
+  }
 
   this->InvokeEvent(vtkCommand::StartEvent);
   ++this->NumberOfLoads;
@@ -945,9 +977,75 @@ bool vtkGlobeLayer::Update()
   }
   this->Valid = true;
   in.LastLoad = now;
+  this->ValuesTime = in.Data ? in.Data->GetMTime() : 0;
+  this->RescaledTime = 0;
   // After the run: an algorithm may modify itself while it executes (its error code).
   in.LastLoad.UpstreamTime = upstreamTime();
   return true;
+}
+
+//------------------------------------------------------------------------------------------
+bool vtkGlobeLayer::Rescale(double fromScale, double fromOffset)
+{
+  auto* values = vtkFloatArray::SafeDownCast(this->Internals->Data);
+  double map[2];
+  if (!values || this->NumberOfImplausibleValues > 0 ||
+    !ValueMap(fromScale, fromOffset, this->ValueScale, this->ValueOffset, map))
+  {
+    return false;
+  }
+  // An affine map, which commutes with the void fill's and the MIP levels' weighted means.
+  const double a = map[0], b = map[1];
+  // As a load computes them: from the values stored as float.
+  const double lo = static_cast<float>(this->MinimumValue * a + b);
+  const double hi = static_cast<float>(this->MaximumValue * a + b);
+  const double minimum = std::min(lo, hi), maximum = std::max(lo, hi);
+  if (!(minimum >= this->PlausibleRange[0] && maximum <= this->PlausibleRange[1]))
+  {
+    return false; // some heights would become voids: a load decides which
+  }
+  if (values->GetMTime() != this->RescaledTime)
+  {
+    this->ValuesTime = values->GetMTime(); // the first rescale since a load or an edit
+  }
+  float* v = values->GetPointer(0);
+  const vtkIdType n = values->GetNumberOfValues();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    v[i] = static_cast<float>(static_cast<double>(v[i]) * a + b); // NaN voids stay NaN
+  }
+  this->MinimumValue = minimum;
+  this->MaximumValue = maximum;
+  values->Modified();
+  this->RescaledTime = values->GetMTime();
+  return true;
+}
+
+bool vtkGlobeLayer::ValueMap(
+  double fromScale, double fromOffset, double toScale, double toOffset, double map[2])
+{
+  map[0] = 1.0;
+  map[1] = 0.0;
+  if (fromScale == toScale && fromOffset == toOffset)
+  {
+    return true;
+  }
+  if (fromScale == 0.0 || !std::isfinite(fromScale) || !std::isfinite(fromOffset) ||
+    !std::isfinite(toScale) || !std::isfinite(toOffset))
+  {
+    return false;
+  }
+  // Raw = (v - fromOffset) / fromScale, so v' = raw * toScale + toOffset.
+  map[0] = toScale / fromScale;
+  map[1] = toOffset - fromOffset * map[0];
+  return true;
+}
+
+bool vtkGlobeLayer::IsRescaledSince(vtkMTimeType time)
+{
+  vtkDataArray* data = this->Internals->Data;
+  return data && this->RescaledTime != 0 && data->GetMTime() == this->RescaledTime &&
+    time >= this->ValuesTime;
 }
 
 //------------------------------------------------------------------------------------------
@@ -986,10 +1084,10 @@ bool vtkGlobeLayer::LoadStreamed()
     vtkErrorMacro(<< "Cannot load " << what << " as a streamed layer: its pages cannot be read");
     return false;
   }
-  if (pages->GetWidth() != this->RasterWidth || pages->GetHeight() != this->RasterHeight)
+  if (pages->GetNumberOfColumns() != this->RasterWidth || pages->GetNumberOfRows() != this->RasterHeight)
   {
     vtkErrorMacro(<< "Cannot load " << what << " as a streamed layer: the page source reads "
-                  << pages->GetWidth() << " x " << pages->GetHeight() << " texels, the header "
+                  << pages->GetNumberOfColumns() << " x " << pages->GetNumberOfRows() << " texels, the header "
                   << this->RasterWidth << " x " << this->RasterHeight);
     return false;
   }
@@ -1020,7 +1118,7 @@ bool vtkGlobeLayer::LoadStreamed()
   if (this->Role == Height)
   {
     vtkNew<vtkFloatArray> page;
-    if (!this->ReadPage(levels - 1, 0, 0, page))
+    if (!this->ReadStoredPage(levels - 1, 0, 0, page))
     {
       in.Streamed = false;
       return false;
@@ -1051,9 +1149,55 @@ void vtkGlobeLayer::FoldPageRange()
   std::lock_guard<std::mutex> lock(in.ValuesMutex);
   if (in.Values.Low <= in.Values.High)
   {
-    this->MinimumValue = in.Values.Low;
-    this->MaximumValue = in.Values.High;
+    // The stored pages' range, in today's ValueScale and ValueOffset.
+    double map[2];
+    ValueMap(in.Values.Scale, in.Values.Offset, this->ValueScale, this->ValueOffset, map);
+    const double lo = in.Values.Low * map[0] + map[1], hi = in.Values.High * map[0] + map[1];
+    this->MinimumValue = std::min(lo, hi);
+    this->MaximumValue = std::max(lo, hi);
   }
+}
+
+bool vtkGlobeLayer::StoredPagesMap(double scale, double offset)
+{
+  vtkInternals& in = *this->Internals;
+  std::lock_guard<std::mutex> lock(in.ValuesMutex);
+  double map[2];
+  if (!ValueMap(in.Values.Scale, in.Values.Offset, scale, offset, map))
+  {
+    return false;
+  }
+  if (in.Values.Low <= in.Values.High)
+  {
+    const double lo = in.Values.Low * map[0] + map[1], hi = in.Values.High * map[0] + map[1];
+    if (!(std::min(lo, hi) >= this->PlausibleRange[0] &&
+          std::max(lo, hi) <= this->PlausibleRange[1]))
+    {
+      return false; // pages read so far would hold implausible heights: read them again
+    }
+  }
+  return true;
+}
+
+std::pair<double, double> vtkGlobeLayer::GetStoredValueMap()
+{
+  vtkInternals& in = *this->Internals;
+  if (!in.Streamed)
+  {
+    return { this->ValueScale, this->ValueOffset };
+  }
+  std::lock_guard<std::mutex> lock(in.ValuesMutex);
+  return { in.Values.Scale, in.Values.Offset };
+}
+
+double vtkGlobeLayer::GetStoredValueScale()
+{
+  return this->GetStoredValueMap().first;
+}
+
+double vtkGlobeLayer::GetStoredValueOffset()
+{
+  return this->GetStoredValueMap().second;
 }
 
 bool vtkGlobeLayer::IsStreamed()
@@ -1067,6 +1211,27 @@ vtkGlobePageSource* vtkGlobeLayer::GetPageSource()
 }
 
 bool vtkGlobeLayer::ReadPage(int level, int column, int row, vtkDataArray* page)
+{
+  if (!this->ReadStoredPage(level, column, row, page))
+  {
+    return false;
+  }
+  auto* heights = vtkFloatArray::SafeDownCast(page);
+  const auto stored = this->GetStoredValueMap();
+  double map[2];
+  ValueMap(stored.first, stored.second, this->ValueScale, this->ValueOffset, map);
+  if (heights && (map[0] != 1.0 || map[1] != 0.0))
+  {
+    float* v = heights->GetPointer(0);
+    for (vtkIdType i = 0, n = heights->GetNumberOfValues(); i < n; ++i)
+    {
+      v[i] = static_cast<float>(v[i] * map[0] + map[1]); // NaN voids stay NaN
+    }
+  }
+  return true;
+}
+
+bool vtkGlobeLayer::ReadStoredPage(int level, int column, int row, vtkDataArray* page)
 {
   vtkInternals& in = *this->Internals;
   if (!in.Streamed)
@@ -1141,7 +1306,7 @@ bool vtkGlobeLayer::ReadPage(int level, int column, int row, vtkDataArray* page)
   // Push: each void takes the bilinear value of the filled level above at its centre. The
   // parent page (column / 2, row / 2) holds this page and its border within its own border.
   vtkNew<vtkFloatArray> parent;
-  if (!this->ReadPage(level + 1, column / 2, row / 2, parent))
+  if (!this->ReadStoredPage(level + 1, column / 2, row / 2, parent))
   {
     return true; // the voids stay voids
   }
@@ -1660,6 +1825,8 @@ void vtkGlobeLayer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfImplausibleValues: " << this->NumberOfImplausibleValues << "\n";
   os << indent << "BlendMode: " << this->GetBlendModeAsString() << "\n";
   os << indent << "FeatherWidth: " << this->FeatherWidth << "\n";
+  os << indent << "ColorMatch: " << this->ColorMatch << "\n";
+  os << indent << "ColorMatchWidth: " << this->ColorMatchWidth << "\n";
   os << indent << "ProjectionQualityWeight: " << (this->ProjectionQualityWeight ? "On" : "Off")
      << " (limit " << this->ProjectionQualityLimit << ")\n";
   os << indent << "Interpolation: " << (this->Interpolation == Nearest ? "Nearest" : "Linear")

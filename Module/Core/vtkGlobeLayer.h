@@ -51,11 +51,13 @@
 #define vtkGlobeLayer_h
 
 #include "vtkGlobeCoreModule.h" // for export macro
+#include "vtkDeprecation.h" // for VTK_DEPRECATION
 #include "vtkObject.h"
 #include "vtkWrappingHints.h" // for VTK_SIZEHINT
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
+#include <utility> // for std::pair
 
 class vtkAlgorithm;
 class vtkAlgorithmOutput;
@@ -187,6 +189,25 @@ public:
   void SetInterpolationToLinear() { this->SetInterpolation(Linear); }
   ///@}
 
+  ///@{
+  /**
+   * Colour match (Color layers; default off): near its border the layer's colours move towards
+   * the statistics of the colour layers below it, fully at the edge and not at all
+   * ColorMatchWidth texels inside (default 64), so that an inset whose colours differ from the
+   * base (an aerial photo over a satellite mosaic) does not show as a rectangle. The transfer
+   * maps each channel's mean and standard deviation over the layer onto those of the layers
+   * below over the same ground (gain clamped to [0.25, 4]), computed on the CPU when the set
+   * of layers or their data change: uniforms, no upload. It needs a whole (not streamed)
+   * geographic colour layer below that covers the inset; without one, or for a global layer,
+   * the layer is drawn as it is.
+   */
+  vtkSetMacro(ColorMatch, bool);
+  vtkGetMacro(ColorMatch, bool);
+  vtkBooleanMacro(ColorMatch, bool);
+  vtkSetClampMacro(ColorMatchWidth, double, 1.0, 1e6);
+  vtkGetMacro(ColorMatchWidth, double);
+  ///@}
+
   enum VerticalDatums
   {
     Ellipsoidal = 0, ///< heights above the ellipsoid (the default)
@@ -254,11 +275,35 @@ public:
   ///@}
 
   ///@{
-  /// Height = raw * ValueScale + ValueOffset (Height layers; ignored for Color). Must be finite.
+  /**
+   * Height = raw * ValueScale + ValueOffset (Height layers; ignored for Color). Must be finite.
+   * A change does not read the file again: the next Update() maps GetData() in place (in
+   * double, h' = (h - offset) / scale * scale' + offset'), and a renderer maps the texture it
+   * already holds the same way with a uniform (vtkGlobeLayerSet), so it uploads nothing. Only
+   * when the map cannot be inverted (a previous scale of 0), when the last load found
+   * implausible heights, or when the new heights would leave the plausible range does the
+   * layer load again. A streamed layer keeps its pages: they carry the values of its last
+   * load (ReadStoredPage), which ReadPage and the renderer map the same way; which posts are
+   * implausible stays as that load decided.
+   */
   vtkSetMacro(ValueScale, double);
   vtkGetMacro(ValueScale, double);
   vtkSetMacro(ValueOffset, double);
   vtkGetMacro(ValueOffset, double);
+  /**
+   * True when GetData() changed since `time` (a data MTime a consumer recorded when it copied
+   * the values) only by such rescales: the copy, made when ValueScale and ValueOffset were s
+   * and o, gives today's values as v * (ValueScale / s) + (ValueOffset - o * ValueScale / s).
+   * False after a load or an edit of the array (Modified()) since `time`.
+   */
+  bool IsRescaledSince(vtkMTimeType time);
+  /**
+   * The map from values made with one ValueScale and ValueOffset to values made with
+   * another: v' = v * map[0] + map[1]. The identity when the two agree; false (and the
+   * identity) when the first scale is 0 or either is not finite, so no map exists.
+   */
+  static bool ValueMap(double fromScale, double fromOffset, double toScale, double toOffset,
+    double map[2]);
   ///@}
 
   ///@{
@@ -358,6 +403,17 @@ public:
    * false (with an error) when the layer is not streamed or the page cannot be read.
    */
   bool ReadPage(int level, int column, int row, vtkDataArray* page);
+  /**
+   * The same page as the page readers store it: heights with the ValueScale and ValueOffset
+   * of the layer's last load (GetStoredValueScale/Offset), which a later change of either does
+   * not re-read (ReadPage maps them to today's). For a renderer that keeps pages and maps them
+   * with a uniform (vtkGlobeLayerSet); colour pages are the same either way.
+   */
+  bool ReadStoredPage(int level, int column, int row, vtkDataArray* page);
+  /// The ValueScale and ValueOffset a streamed layer's stored pages carry (those of its last
+  /// load); for a whole layer, whose GetData() follows every change, ValueScale and ValueOffset.
+  double GetStoredValueScale();
+  double GetStoredValueOffset();
   ///@}
 
   /// How many times the data was (re)built from the file or the in-memory values.
@@ -380,10 +436,21 @@ public:
   ///@}
 
   ///@{
-  /// Raster size of the loaded data (0 when invalid) and its components (1 or 4).
-  int GetWidth() { return this->RasterWidth; }
-  int GetHeight() { return this->RasterHeight; }
+  /**
+   * Raster size of the loaded data: columns (west to east) and rows (north to south), 0 when
+   * invalid; GetDimensions gives both. And its components (1 or 4). The names avoid "height",
+   * which in this API means the terrain (role Height, SetHeightData).
+   */
+  int GetNumberOfColumns() { return this->RasterWidth; }
+  int GetNumberOfRows() { return this->RasterHeight; }
+  int* GetDimensions() VTK_SIZEHINT(2);
+  void GetDimensions(int dimensions[2]);
   vtkGetMacro(NumberOfComponents, int);
+  /// Deprecated names of GetNumberOfColumns and GetNumberOfRows, kept for one release.
+  VTK_DEPRECATION("use GetNumberOfColumns()")
+  int GetWidth() { return this->RasterWidth; }
+  VTK_DEPRECATION("use GetNumberOfRows(): in this API height means terrain")
+  int GetHeight() { return this->RasterHeight; }
   ///@}
 
   /**
@@ -482,6 +549,8 @@ protected:
   double ValidRange[2] = { -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
   int BlendMode = Replace;
   double FeatherWidth = 8.0;
+  bool ColorMatch = false;
+  double ColorMatchWidth = 64.0;
   bool ProjectionQualityWeight = false;
   double ProjectionQualityLimit = 8.0;
   int Interpolation = Linear;
@@ -493,6 +562,7 @@ protected:
   int NumberOfLoads = 0;
   int RasterWidth = 0; // not Width/Height: Height is a Roles value
   int RasterHeight = 0;
+  int Dimensions[2] = { 0, 0 }; // what GetDimensions() returns
   int NumberOfComponents = 0;
   vtkIdType NumberOfVoids = 0;
   vtkIdType NumberOfImplausibleValues = 0;
@@ -501,15 +571,26 @@ protected:
   double DatumSemiMajorAxis = 0.0;
   double DatumSemiMinorAxis = 0.0;
   double MinimumValue = 0.0;
+  // GetData()'s MTime before its first rescale since its last other change, and after its
+  // last rescale (0: none since the load).
+  vtkMTimeType ValuesTime = 0;
+  vtkMTimeType RescaledTime = 0;
   double MaximumValue = 0.0;
 
 private:
+  // Maps the loaded heights from one ValueScale/ValueOffset to another in place; false when
+  // that cannot give what a load would (the caller loads then).
+  bool Rescale(double fromScale, double fromOffset);
   vtkGlobeLayer(const vtkGlobeLayer&) = delete;
   void operator=(const vtkGlobeLayer&) = delete;
 
   bool Load(vtkImageData* image, int streamedRows = 0);
   bool LoadStreamed();
   void FoldPageRange();
+  // Whether a streamed layer's stored pages can be mapped to this ValueScale and ValueOffset.
+  bool StoredPagesMap(double scale, double offset);
+  // The stored scale and offset, read together under one lock.
+  std::pair<double, double> GetStoredValueMap();
   bool StartMemoryData(const char* method, const char* what, int width, int height,
     const void* values, const double extent[4]);
   void SetMemoryImage(int role, int width, int height, int components, int scalarType,

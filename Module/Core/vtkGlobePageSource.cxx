@@ -443,13 +443,13 @@ bool vtkGlobePageSource::Open()
   return this->Internals->Acquire(this) != nullptr;
 }
 
-int vtkGlobePageSource::GetWidth()
+int vtkGlobePageSource::GetNumberOfColumns()
 {
   auto s = this->Internals->Acquire(this);
   return s ? s->Width : 0;
 }
 
-int vtkGlobePageSource::GetHeight()
+int vtkGlobePageSource::GetNumberOfRows()
 {
   auto s = this->Internals->Acquire(this);
   return s ? s->Height : 0;

@@ -102,8 +102,9 @@ public:
 
   ///@{
   /// What the opened raster is (0 / false when it cannot be opened).
-  int GetWidth();
-  int GetHeight();
+  /// Columns and rows of level 0.
+  int GetNumberOfColumns();
+  int GetNumberOfRows();
   /// 1 (heights, float) or 4 (RGBA, unsigned char): the components of a page.
   int GetNumberOfComponents();
   /// VTK_FLOAT or VTK_UNSIGNED_CHAR: the type of the array ReadPage fills.

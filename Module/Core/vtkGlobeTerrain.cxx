@@ -97,8 +97,8 @@ struct vtkGlobeTerrain::vtkInternals
       vtkGlobeLayer* layer = entry.first;
       Composed c;
       c.Layer = layer;
-      c.Width = layer->GetWidth();
-      c.Height = layer->GetHeight();
+      c.Width = layer->GetNumberOfColumns();
+      c.Height = layer->GetNumberOfRows();
       if (c.Width <= 0 || c.Height <= 0)
       {
         continue;

@@ -134,7 +134,7 @@ LocalTerrain ComputeLocalTerrain(vtkGlobeMapper* mapper, double lon, double lat,
     double e[4];
     layer->GetGeographicExtent(e);
     vtkDataArray* data = layer->GetData();
-    const int w = layer->GetWidth(), h = layer->GetHeight();
+    const int w = layer->GetNumberOfColumns(), h = layer->GetNumberOfRows();
     if (layer->GetModelType() != vtkGlobeLayer::Geographic || !data || w <= 0 || h <= 0 ||
       !std::isfinite(e[0]) || !std::isfinite(e[3]))
     {

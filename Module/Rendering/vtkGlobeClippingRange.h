@@ -90,7 +90,8 @@ public:
   vtkGetMacro(NearSafety, double);
   ///@}
 
-  /// Number of times the policy set a range (tests).
+  /// Number of times the policy set a range: public so that an application can confirm the
+  /// policy is attached and runs (a renderer may reset its range in ResetCameraClippingRange).
   vtkGetMacro(NumberOfApplications, int);
 
   static vtkInformationObjectBaseKey* POLICY();

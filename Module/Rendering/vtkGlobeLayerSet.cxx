@@ -44,6 +44,10 @@ struct Entry
   vtkSmartPointer<vtkTextureObject> Texture;
   vtkDataArray* UploadedData = nullptr;
   vtkMTimeType UploadedTime = 0;
+  // The heights' ValueScale and ValueOffset when the texture was made: a later rescale of the
+  // layer maps the texture with a uniform instead of an upload.
+  double UploadedScale = 1.0;
+  double UploadedOffset = 0.0;
   int Added = 0;          // insertion index: ties in DrawOrder keep it
   bool Active = false;    // loaded, valid, supported and enabled
   bool Reported = false;  // an error about this layer was reported already
@@ -71,7 +75,146 @@ struct Entry
   bool Culled = false;
   std::vector<std::array<double, 2>> Footprint;
   double FootprintSpacing = 0.0;
+  // Colour match (vtkGlobeLayer::ColorMatch): per channel, colour -> colour * gain + offset
+  // near the border; Match is false when it is off or nothing below covers the layer. Stamp:
+  // what the statistics were computed from (recomputed only when it changes).
+  bool Match = false;
+  double MatchGain[3] = { 1, 1, 1 };
+  double MatchOffset[3] = { 0, 0, 0 };
+  std::vector<double> MatchStamp;
 };
+
+// A whole colour layer's RGBA at texture coordinates (u, v) (nearest texel), after its gamma,
+// in [0, 1]; false where it has no data (outside, or alpha 0).
+bool ColorAt(vtkGlobeLayer* layer, double u, double v, double rgb[3])
+{
+  vtkDataArray* data = layer->GetData();
+  const int w = layer->GetNumberOfColumns(), h = layer->GetNumberOfRows();
+  if (!data || data->GetNumberOfComponents() != 4 || u < 0.0 || u > 1.0 || v < 0.0 || v > 1.0)
+  {
+    return false;
+  }
+  const vtkIdType c = std::min(static_cast<vtkIdType>(u * w), static_cast<vtkIdType>(w - 1));
+  const vtkIdType r = std::min(static_cast<vtkIdType>(v * h), static_cast<vtkIdType>(h - 1));
+  const vtkIdType t = r * w + c;
+  if (data->GetComponent(t, 3) <= 0.0)
+  {
+    return false;
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    rgb[k] = std::pow(data->GetComponent(t, k) / 255.0, layer->GetGamma());
+  }
+  return true;
+}
+
+// The colour match of entry `e` against the geographic whole colour layers below it (`below`,
+// bottom first): each channel's mean and standard deviation over the layer, and over the same
+// ground below (33 x 33 points placed through the layer's footprint), give gain and offset.
+void ComputeColorMatch(Entry& e, const std::vector<Entry*>& below)
+{
+  vtkGlobeLayer* layer = e.Layer;
+  // What the statistics depend on: the switch, and each layer's data and gamma (opacity,
+  // feather or the width of the match are uniforms and recompute nothing).
+  auto dataTime = [](vtkGlobeLayer* l) {
+    return l->GetData() ? static_cast<double>(l->GetData()->GetMTime()) : 0.0;
+  };
+  std::vector<double> stamp = { layer->GetColorMatch() ? 1.0 : 0.0, dataTime(layer),
+    layer->GetGamma() };
+  for (const Entry* b : below)
+  {
+    stamp.push_back(dataTime(b->Layer));
+    stamp.push_back(b->Layer->GetGamma());
+  }
+  if (stamp == e.MatchStamp)
+  {
+    return;
+  }
+  e.MatchStamp = stamp;
+  e.Match = false;
+  if (!layer->GetColorMatch() || e.Streamed || e.Wraps || e.Footprint.size() != 81 ||
+    !layer->GetData())
+  {
+    return;
+  }
+  // The layer's own statistics, over at most about 2^20 of its pixels.
+  double sum[2][3] = { { 0, 0, 0 }, { 0, 0, 0 } }, sq[2][3] = { { 0, 0, 0 }, { 0, 0, 0 } };
+  double count[2] = { 0, 0 };
+  const int w = layer->GetNumberOfColumns(), h = layer->GetNumberOfRows();
+  const int stride = std::max(1, static_cast<int>(std::sqrt(double(w) * h / 1048576.0)));
+  for (int r = 0; r < h; r += stride)
+  {
+    for (int c = 0; c < w; c += stride)
+    {
+      double rgb[3];
+      if (ColorAt(layer, (c + 0.5) / w, (r + 0.5) / h, rgb))
+      {
+        count[0] += 1.0;
+        for (int k = 0; k < 3; ++k)
+        {
+          sum[0][k] += rgb[k];
+          sq[0][k] += rgb[k] * rgb[k];
+        }
+      }
+    }
+  }
+  // What lies below, at 33 x 33 points of the layer's footprint (bilinear in its 9 x 9 samples).
+  constexpr int n = 33;
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const double fu = 8.0 * i / (n - 1), fv = 8.0 * j / (n - 1);
+      const int i0 = std::min(static_cast<int>(fu), 7), j0 = std::min(static_cast<int>(fv), 7);
+      const double a = fu - i0, b = fv - j0;
+      auto at = [&](int ii, int jj) { return e.Footprint[static_cast<size_t>(jj) * 9 + ii]; };
+      double ll[2];
+      for (int k = 0; k < 2; ++k)
+      {
+        ll[k] = (1 - a) * (1 - b) * at(i0, j0)[k] + a * (1 - b) * at(i0 + 1, j0)[k] +
+          (1 - a) * b * at(i0, j0 + 1)[k] + a * b * at(i0 + 1, j0 + 1)[k];
+      }
+      for (auto it = below.rbegin(); it != below.rend(); ++it)
+      {
+        vtkGlobeLayer* base = (*it)->Layer;
+        double extent[4], rgb[3];
+        base->GetGeographicExtent(extent);
+        double x = ll[0] - extent[0];
+        if ((*it)->Wraps)
+        {
+          x = std::fmod(std::fmod(x, 360.0) + 360.0, 360.0);
+        }
+        if (ColorAt(base, x / (extent[1] - extent[0]), (extent[3] - ll[1]) / (extent[3] - extent[2]),
+              rgb))
+        {
+          count[1] += 1.0;
+          for (int k = 0; k < 3; ++k)
+          {
+            sum[1][k] += rgb[k];
+            sq[1][k] += rgb[k] * rgb[k];
+          }
+          break; // the topmost layer below that has data here
+        }
+      }
+    }
+  }
+  if (count[0] < 16.0 || count[1] < 0.5 * n * n)
+  {
+    return;
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    double mean[2], sd[2];
+    for (int q = 0; q < 2; ++q)
+    {
+      mean[q] = sum[q][k] / count[q];
+      sd[q] = std::sqrt(std::max(0.0, sq[q][k] / count[q] - mean[q] * mean[q]));
+    }
+    e.MatchGain[k] = sd[0] > 1e-6 ? std::max(0.25, std::min(4.0, sd[1] / sd[0])) : 1.0;
+    e.MatchOffset[k] = mean[1] - e.MatchGain[k] * mean[0];
+  }
+  e.Match = true;
+}
 
 // A geoid grid on the GPU (vtkGlobeLayer::VerticalDatum Geoid): its nodes as an R32F texture
 // read with texelFetch, interpolated in the shader (hardware filtering weights have 8 bits).
@@ -319,7 +462,8 @@ int vtkGlobeLayerSet::Update()
     const bool projected = layer->GetModelType() == vtkGlobeLayer::Projected;
     vtkDataArray* data = layer->GetData(); // nullptr when streamed
     e.Streamed = layer->IsStreamed();
-    if (data != e.PreparedData || (data && data->GetMTime() != e.PreparedTime) ||
+    if (data != e.PreparedData ||
+      (data && data->GetMTime() != e.PreparedTime && !layer->IsRescaledSince(e.PreparedTime)) ||
       layer->GetNumberOfLoads() != e.PreparedLoads)
     {
       e.Function.clear();
@@ -376,8 +520,8 @@ int vtkGlobeLayerSet::Update()
     {
       // A cylindrical projection one whole turn wide wraps like a global geographic layer.
       e.Wraps = layer->IsGlobal();
-      e.Border[0] = e.Wraps ? 0.0 : feather / layer->GetWidth();
-      e.Border[1] = feather / layer->GetHeight();
+      e.Border[0] = e.Wraps ? 0.0 : feather / layer->GetNumberOfColumns();
+      e.Border[1] = feather / layer->GetNumberOfRows();
       order.push_back(&e);
       continue;
     }
@@ -396,9 +540,9 @@ int vtkGlobeLayerSet::Update()
     });
     // A global layer wraps in longitude and has no east/west border; one that reaches both
     // poles has no north/south border.
-    e.Border[0] = e.Wraps ? 0.0 : feather / layer->GetWidth();
+    e.Border[0] = e.Wraps ? 0.0 : feather / layer->GetNumberOfColumns();
     const bool polesCovered = extent[2] <= -90.0 && extent[3] >= 90.0;
-    e.Border[1] = polesCovered ? 0.0 : feather / layer->GetHeight();
+    e.Border[1] = polesCovered ? 0.0 : feather / layer->GetNumberOfRows();
     order.push_back(&e);
   }
   // Observers of later layers may have removed earlier ones.
@@ -414,6 +558,16 @@ int vtkGlobeLayerSet::Update()
   {
     e->Culled = false;
     in.Roles[e->Layer->GetRole()].push_back(e);
+  }
+  // Colour match: against the geographic whole colour layers below each layer that asks.
+  std::vector<Entry*> below;
+  for (Entry* e : in.Roles[vtkGlobeLayer::Color])
+  {
+    ComputeColorMatch(*e, below);
+    if (e->Function.empty() && !e->Streamed && e->Layer->GetData())
+    {
+      below.push_back(e);
+    }
   }
   this->ComputeHeightRange();
   return static_cast<int>(order.size());
@@ -504,14 +658,14 @@ bool vtkGlobeLayerSet::PrepareProjection(void* entry)
   vtkObject::GlobalWarningDisplayOff();
   double parameters[vtkGlobeMapProjection::NumberOfShaderParameters];
   bool ok = projection->ComputeShaderParametersDouble(
-    origin, pixelSize, layer->GetWidth(), layer->GetHeight(), parameters);
+    origin, pixelSize, layer->GetNumberOfColumns(), layer->GetNumberOfRows(), parameters);
   std::copy(parameters, parameters + vtkGlobeMapProjection::NumberOfShaderParameters, e.Parameters);
   e.Reference[0] = parameters[8];
   e.Reference[1] = parameters[9];
   // The raster must lie in the projection's domain: its centre maps to a (lon, lat) there and
   // back to itself (an inverse far outside the domain does not round-trip).
-  const double centre[2] = { origin[0] + 0.5 * pixelSize[0] * layer->GetWidth(),
-    origin[1] - 0.5 * pixelSize[1] * layer->GetHeight() };
+  const double centre[2] = { origin[0] + 0.5 * pixelSize[0] * layer->GetNumberOfColumns(),
+    origin[1] - 0.5 * pixelSize[1] * layer->GetNumberOfRows() };
   double lonLat[2], back[2];
   ok = ok && projection->Inverse(centre[0], centre[1], lonLat) &&
     projection->IsInValidDomain(lonLat[0], lonLat[1]) &&
@@ -525,13 +679,13 @@ bool vtkGlobeLayerSet::PrepareProjection(void* entry)
     std::snprintf(text, sizeof(text),
       "its georeferencing (north-west corner %.6g, %.6g; pixel %.6g x %.6g; %d x %d pixels) does "
       "not fit its projection EPSG:%d (the extent is empty or outside the projection's domain)",
-      origin[0], origin[1], pixelSize[0], pixelSize[1], layer->GetWidth(), layer->GetHeight(), epsg);
+      origin[0], origin[1], pixelSize[0], pixelSize[1], layer->GetNumberOfColumns(), layer->GetNumberOfRows(), epsg);
     return refuse(text);
   }
   e.Function = projection->GetShaderFunctionName();
   // The footprint for culling: the raster's edges and inside mapped back to (lon, lat).
   e.Wraps = layer->IsGlobal();
-  const int w = layer->GetWidth(), h = layer->GetHeight();
+  const int w = layer->GetNumberOfColumns(), h = layer->GetNumberOfRows();
   SetFootprint(e, [&](double u, double v, double ll[2]) {
     return projection->InverseInDomain(
       origin[0] + pixelSize[0] * w * u, origin[1] - pixelSize[1] * h * v, ll);
@@ -635,7 +789,7 @@ int vtkGlobeLayerSet::GetNumberOfActiveColorLayers()
   return this->GetNumberOfActiveLayers(vtkGlobeLayer::Color);
 }
 
-int vtkGlobeLayerSet::GetNumberOfActiveLayers(int role)
+int vtkGlobeLayerSet::GetNumberOfActiveLayers(vtkGlobeLayer::Roles role)
 {
   if (role < 0 || role >= NumberOfRoles)
   {
@@ -662,9 +816,10 @@ void vtkGlobeLayerSet::UploadTextures(vtkOpenGLRenderWindow* window, bool waitFo
     }
     vtkGlobeLayer* layer = e.Layer;
     vtkDataArray* data = layer->GetData();
-    // Only the data decides: composition settings change the layer's MTime, not its data.
+    // Only the data decides: composition settings change the layer's MTime, not its data,
+    // and a new ValueScale or ValueOffset only maps it (a uniform, see BindUniforms).
     if (e.Texture && e.Texture->GetContext() == window && e.UploadedData == data &&
-      e.UploadedTime >= data->GetMTime())
+      (e.UploadedTime >= data->GetMTime() || layer->IsRescaledSince(e.UploadedTime)))
     {
       continue;
     }
@@ -673,7 +828,7 @@ void vtkGlobeLayerSet::UploadTextures(vtkOpenGLRenderWindow* window, bool waitFo
       e.Texture = vtkSmartPointer<vtkTextureObject>::New();
     }
     e.Texture->SetContext(window);
-    const int w = layer->GetWidth(), h = layer->GetHeight();
+    const int w = layer->GetNumberOfColumns(), h = layer->GetNumberOfRows();
     const int maxSize = vtkTextureObject::GetMaximumTextureSize(window);
     if (w > maxSize || h > maxSize)
     {
@@ -697,6 +852,8 @@ void vtkGlobeLayerSet::UploadTextures(vtkOpenGLRenderWindow* window, bool waitFo
     e.Texture->Deactivate();
     e.UploadedData = data;
     e.UploadedTime = data->GetMTime();
+    e.UploadedScale = layer->GetValueScale();
+    e.UploadedOffset = layer->GetValueOffset();
     ++this->NumberOfUploads;
   }
   // Geoids of the active height layers: the node grid as it is (texelFetch only).
@@ -936,7 +1093,7 @@ std::string vtkGlobeLayerSet::GetShaderKey(int roles)
     {
       key << e->Layer->GetBlendMode()
           << (!e->Function.empty() ? e->Function.substr(13, 2) : "g") << (e->Wraps ? "w" : "")
-          << (e->Layer->GetProjectionQualityWeight() ? "q" : "")
+          << (e->Layer->GetProjectionQualityWeight() ? "q" : "") << (e->Match ? "m" : "")
           << (e->Geoid >= 0 ? "G" + std::to_string(e->Geoid) +
                   (in.Geoids[e->Geoid].Geoid->IsGlobal() ? "w" : "")
                             : std::string())
@@ -1131,6 +1288,16 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
       {
         s << "uniform vec4 " << p << "Projection[7];\n";
       }
+      if (role == vtkGlobeLayer::Height)
+      {
+        s << "uniform vec2 " << p << "Value;\n"; // texture or pages -> metres: scale, offset
+      }
+      if (list[i]->Match)
+      {
+        s << "uniform vec3 " << p << "MatchGain;\n"
+          << "uniform vec3 " << p << "MatchOffset;\n"
+          << "uniform vec4 " << p << "MatchBorder;\n";
+      }
       s << ""
         << "uniform vec4 " << p << "Style;\n" // opacity, gamma, valid min, valid max
         << "uniform vec4 " << p << "Border;\n";
@@ -1264,6 +1431,8 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
             << "    vec2 dLat = (" << UV(e, p, At(hp, nullptr, "eLat"), hp) << " - uv) / eLat;\n"
             << "    vec2 gi = vec2(dot(perUV, dLon), dot(perUV, dLat));\n";
         }
+        s << "    v = v * " << p << "Value.x + " << p << "Value.y;\n    gi *= " << p
+          << "Value.x;\n";
         s
           << "    bool valid = !isnan(v) && !isnan(gi.x) && !isnan(gi.y) && v >= " << p
           << "Style.z && v <= " << p << "Style.w;\n";
@@ -1283,6 +1452,12 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
         s << "    vec4 t = " << Sample(e, p, e->Streamed ? "st" + n : "uv") << ";\n"
           << "    w *= t.a;\n"
           << "    vec3 rgb = pow(t.rgb, vec3(" << p << "Style.y));\n";
+        if (e->Match)
+        {
+          // Towards the statistics below: fully at the edge, not at all MatchBorder inside.
+          s << "    rgb = mix(clamp(rgb * " << p << "MatchGain + " << p
+            << "MatchOffset, 0.0, 1.0), rgb, globe_coverage(uv, " << p << "MatchBorder));\n";
+        }
         switch (role)
         {
           case vtkGlobeLayer::NormalMap:
@@ -1393,7 +1568,7 @@ void vtkGlobeLayerSet::RequestPages(vtkDoubleArray* footprints, int blockPixels,
       // The layer's texture coordinates at (lon, lat), in double; false outside its domain.
       double origin[2], pixel[2];
       layer->GetProjectedGeoTransform(origin, pixel);
-      const double W = layer->GetWidth(), H = layer->GetHeight();
+      const double W = layer->GetNumberOfColumns(), H = layer->GetNumberOfRows();
       auto uvAt = [&](double lon, double lat, double uv[2]) -> bool {
         if (e->Function.empty())
         {
@@ -1693,6 +1868,31 @@ void vtkGlobeLayerSet::BindTextures(vtkShaderProgram* program, int roles)
       }
       program->SetUniform4f((p + "Style").c_str(), f4(style).data());
       program->SetUniform4f((p + "Border").c_str(), f4(e->Border).data());
+      if (e->Match)
+      {
+        const float gain[3] = { static_cast<float>(e->MatchGain[0]),
+          static_cast<float>(e->MatchGain[1]), static_cast<float>(e->MatchGain[2]) };
+        const float offset[3] = { static_cast<float>(e->MatchOffset[0]),
+          static_cast<float>(e->MatchOffset[1]), static_cast<float>(e->MatchOffset[2]) };
+        const double width = layer->GetColorMatchWidth();
+        const float border[4] = { static_cast<float>(width / layer->GetNumberOfColumns()),
+          static_cast<float>(width / layer->GetNumberOfRows()), 0.0f, 0.0f };
+        program->SetUniform3f((p + "MatchGain").c_str(), gain);
+        program->SetUniform3f((p + "MatchOffset").c_str(), offset);
+        program->SetUniform4f((p + "MatchBorder").c_str(), border);
+      }
+      if (layer->GetRole() == vtkGlobeLayer::Height)
+      {
+        // The texture's heights were made with UploadedScale/Offset (a streamed layer's pages
+        // with its stored ones); the layer's values now use ValueScale/Offset
+        // (vtkGlobeLayer::IsRescaledSince, ReadStoredPage).
+        double map[2];
+        vtkGlobeLayer::ValueMap(e->Streamed ? layer->GetStoredValueScale() : e->UploadedScale,
+          e->Streamed ? layer->GetStoredValueOffset() : e->UploadedOffset,
+          layer->GetValueScale(), layer->GetValueOffset(), map);
+        const float value[2] = { static_cast<float>(map[0]), static_cast<float>(map[1]) };
+        program->SetUniform2f((p + "Value").c_str(), value);
+      }
       if (!e->Function.empty())
       {
         program->SetUniform4fv((p + "Projection").c_str(), 7,

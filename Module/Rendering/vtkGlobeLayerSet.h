@@ -43,6 +43,7 @@
 #ifndef vtkGlobeLayerSet_h
 #define vtkGlobeLayerSet_h
 
+#include "vtkGlobeLayer.h"            // for vtkGlobeLayer::Roles
 #include "vtkGlobeRenderingModule.h" // for export macro
 #include "vtkObject.h"
 
@@ -52,7 +53,6 @@
 class vtkCamera;
 class vtkDoubleArray;
 class vtkGlobeEllipsoid;
-class vtkGlobeLayer;
 class vtkMatrix4x4;
 class vtkGlobePageCache;
 class vtkOpenGLRenderWindow;
@@ -87,8 +87,8 @@ public:
   double GetMinimumHeight();
   double GetMaximumHeight();
   int GetNumberOfActiveHeightLayers();
-  /// Active layers of one role (vtkGlobeLayer::Roles).
-  int GetNumberOfActiveLayers(int role);
+  /// Active layers of one role, e.g. GetNumberOfActiveLayers(vtkGlobeLayer::Mask).
+  int GetNumberOfActiveLayers(vtkGlobeLayer::Roles role);
   int GetNumberOfActiveColorLayers();
   ///@}
 

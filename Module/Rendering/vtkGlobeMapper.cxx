@@ -42,6 +42,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -88,6 +89,30 @@ public:
   GLuint ReadbackBuffer = 0;
   bool ReadbackPending = false;
   double PendingEye[3] = { 0, 0, 0 };
+  // The view of the frame whose G-buffer the pending and the collected reduction reduced.
+  std::vector<double> PendingView, ReductionView;
+  // The primary sphere's height in the last frame drawn (NaN: none).
+  double PrimaryHeight = std::numeric_limits<double>::quiet_NaN();
+
+  /**
+   * The primary sphere for a view whose lowest visible terrain is `reduced`, seen from
+   * `above` metres over it: 2-3 % of `above` below it (so terrain that comes into view next
+   * frame stays above the sphere), on a grid of a power of two metres near 1 % of `above`,
+   * so that views that differ by a little reduce to the same sphere; and the last frame's
+   * sphere as long as it lies within a band below `reduced`, so that the reduction's
+   * sub-millimetre changes between frames of one view never move the grid, and with it the
+   * picture (temporal stability).
+   */
+  double PrimaryFor(double reduced, double above, double minHeight) const
+  {
+    const double low = reduced - (0.04 * above + 2.0), high = reduced - (0.01 * above + 0.5);
+    if (this->PrimaryHeight >= std::max(minHeight, low) && this->PrimaryHeight <= high)
+    {
+      return this->PrimaryHeight;
+    }
+    const double step = std::exp2(std::floor(std::log2(0.01 * above + 0.5)));
+    return std::max(minHeight, std::floor((reduced - (0.02 * above + 1.0)) / step) * step);
+  }
 
   vtkOpenGLRenderTimer RasterTimer;
   vtkOpenGLRenderTimer ReductionTimer;
@@ -402,6 +427,8 @@ vtkMTimeType vtkGlobeMapper::GetMTime()
 {
   vtkMTimeType t = this->Superclass::GetMTime();
   t = std::max(t, this->Internals->Ellipsoid->GetMTime());
+  // Shading and effects are held by the composite pass, whichever name set them.
+  t = std::max(t, this->Internals->Composite->GetMTime());
   return std::max(t, this->Internals->Layers->GetMTime());
 }
 
@@ -767,19 +794,19 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   worldToBody->MultiplyPoint(eye, eye);
   double primaryHeight = minHeight;
   this->PrimaryFromReduction = false;
+  double llh[3];
+  in.Ellipsoid->CartesianToGeodeticQuiet(eye, llh);
   if (in.ReductionValid)
   {
-    double llh[3];
-    in.Ellipsoid->CartesianToGeodeticQuiet(eye, llh);
     const double above = std::abs(llh[2] - in.ReducedHeight);
     const double moved = std::sqrt(vtkMath::Distance2BetweenPoints(eye, in.ReductionEye));
     if (moved <= 0.25 * above + 1.0)
     {
-      // A margin keeps terrain that comes into view next frame above the sphere.
-      primaryHeight = std::max(minHeight, in.ReducedHeight - (0.02 * above + 1.0));
+      primaryHeight = in.PrimaryFor(in.ReducedHeight, above, minHeight);
       this->PrimaryFromReduction = true;
     }
   }
+  in.PrimaryHeight = std::numeric_limits<double>::quiet_NaN(); // set again once drawn
 
   // Cameras that leave nothing of the globe to see: said once while they last.
   std::string key, message;
@@ -832,14 +859,14 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   {
     return;
   }
+  // The footprint of the G-buffer: read back by the next frame, or now when waiting.
+  double reference[3] = { 0.0, 0.0, 0.0 };
+  if (streaming && in.Layers->GetHighPrecisionGeodetic())
+  {
+    in.Layers->GetReferenceDirection(reference);
+  }
   if (streaming)
   {
-    // The footprint of this G-buffer: read back by the next frame, or now when waiting.
-    double reference[3] = { 0.0, 0.0, 0.0 };
-    if (in.Layers->GetHighPrecisionGeodetic())
-    {
-      in.Layers->GetReferenceDirection(reference);
-    }
     in.FeedbackGridCell =
       static_cast<double>(std::max(width, height)) / std::max(1, in.GridPass->GetResolution() - 1);
     vtkGlobePageCache* cache = in.Layers->GetPageCache();
@@ -862,29 +889,68 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
       {
         break; // no room for more: the frame keeps the ancestors
       }
-      // The new pages may raise the terrain's bounds: the grid is cast again.
+      // The new pages may raise the terrain's bounds: the grid is cast again, on the same
+      // primary sphere (lower terrain they show is caught by the reduction below).
       maxHeight = in.Layers->GetMaximumHeight();
       minHeight = in.Layers->GetMinimumHeight();
-      in.Grid->Update(camera, act->GetMatrix(), ren->GetTiledAspectRatio(),
-        std::min(primaryHeight, minHeight), maxHeight);
+      primaryHeight = std::max(primaryHeight, minHeight);
+      in.Grid->Update(
+        camera, act->GetMatrix(), ren->GetTiledAspectRatio(), primaryHeight, maxHeight);
       in.GridPass->Render(&renderState);
       if (!this->RenderGBuffer(ren, act, width, height))
       {
         return;
       }
     }
-    if (!this->WaitForPages)
+  }
+  bool reduced = false;
+  if (!(in.ReductionValid && in.ReductionView == in.RenderedView))
+  {
+    // A new view (or the first): its sphere came from another view's terrain, and the next
+    // frame would correct it, changing the picture. This frame's own lowest terrain is read
+    // back now (the one frame that waits for the GPU) and, when it asks for another sphere,
+    // the grid is cast again, so the first frame after a move is final.
+    this->ReduceMinimumRadius(ren, width, height, eye);
+    this->CollectReduction();
+    reduced = in.ReductionValid;
+    if (in.ReductionValid)
     {
-      in.Feedback->Render(window, in.GBuffer, in.GDepth, reference, in.Ellipsoid->GetRadii());
-      in.FeedbackView = in.RenderedView;
+      in.PrimaryHeight = primaryHeight;
+      const double settled =
+        in.PrimaryFor(in.ReducedHeight, std::abs(llh[2] - in.ReducedHeight), minHeight);
+      ++this->NumberOfSynchronousReductions;
+      if (settled != primaryHeight)
+      {
+        primaryHeight = settled;
+        this->PrimaryFromReduction = true;
+        ++this->NumberOfRecasts;
+        reduced = false; // the G-buffer changes: reduce it again below
+        in.Grid->Update(
+          camera, act->GetMatrix(), ren->GetTiledAspectRatio(), primaryHeight, maxHeight);
+        in.GridPass->Render(&renderState);
+        if (!this->RenderGBuffer(ren, act, width, height))
+        {
+          return;
+        }
+      }
     }
+  }
+  if (streaming && !this->WaitForPages)
+  {
+    // The final G-buffer's footprint, for the next frame's page requests.
+    in.Feedback->Render(window, in.GBuffer, in.GDepth, reference, in.Ellipsoid->GetRadii());
+    in.FeedbackView = in.RenderedView;
   }
   state->vtkglViewport(viewport[0], viewport[1], width, height);
   this->UpdateLight(ren, act);
   in.Composite->SetGBuffer(in.GBuffer, in.GDepth);
   in.Composite->Render(&renderState);
   this->LastFrameDrewGlobe = true;
-  this->ReduceMinimumRadius(ren, width, height, eye);
+  in.PrimaryHeight = primaryHeight;
+  if (!reduced)
+  {
+    this->ReduceMinimumRadius(ren, width, height, eye);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -931,6 +997,7 @@ void vtkGlobeMapper::CollectReduction()
     {
       in.ReductionEye[i] = in.PendingEye[i];
     }
+    in.ReductionView = in.PendingView;
   }
 }
 
@@ -1216,6 +1283,7 @@ void vtkGlobeMapper::ReduceMinimumRadius(
   {
     in.PendingEye[i] = eye[i];
   }
+  in.PendingView = in.RenderedView;
 }
 
 //------------------------------------------------------------------------------

@@ -126,7 +126,13 @@ public:
   ///@}
 
   ///@{
-  /// Shading: ambient fraction and the colour of ground that no colour layer covers.
+  /**
+   * Shading: ambient fraction and the colour of ground that no colour layer covers.
+   * One owner: these and the effect switches below are held by the composite pass
+   * (GetCompositePass()), and the mapper's methods read and write that same value, so the
+   * two names can never disagree and neither overrides the other. The mapper keeps them
+   * because they are what most scenes set; the effects' parameters live on the pass only.
+   */
   void SetAmbient(double ambient);
   double GetAmbient();
   void SetBaseColor(double r, double g, double b);
@@ -152,7 +158,8 @@ public:
 
   ///@{
   /**
-   * Effects of the screen composition (vtkGlobeCompositePass; its parameters are there):
+   * Effects of the screen composition (held by vtkGlobeCompositePass, as above; their
+   * parameters are set there):
    * the shader holds the code of the effects that are on, and only of those. Lighting,
    * NightLights (needs NightLights layers) and SpecularWater (needs Mask layers) are on;
    * Atmosphere, Graticule and Contours are off.
@@ -227,20 +234,25 @@ public:
   vtkGlobeCompositePass* GetCompositePass();
   ///@}
 
-  ///@{
-  /// The last frame's G-buffer (window-sized: direction, or its offset from the local origin
-  /// with HighPrecisionGeodetic, + height; and its depth), for tests
-  /// that read every texel back (hard cases: no NaN anywhere); nullptr before the first frame.
-  vtkTextureObject* GetGBufferTexture();
-  vtkTextureObject* GetGBufferDepthTexture();
-  ///@}
-
   /// True when the last frame's primary sphere came from the GPU min reduction (false: fallback).
   vtkGetMacro(PrimaryFromReduction, bool);
   /// The lowest visible terrain height of the last frame (m), from the reduction.
   vtkGetMacro(LastVisibleMinimumHeight, double);
   /// False when the last frame drew no globe (not in view, or no usable camera).
   vtkGetMacro(LastFrameDrewGlobe, bool);
+
+  ///@{
+  /**
+   * Temporal stability (Documentation/rendering.md, "The first frame after a move"): a frame
+   * whose view differs from the last one reads its own lowest visible terrain back at once
+   * (NumberOfSynchronousReductions counts these frames) and, when that asks for another
+   * primary sphere, casts its grid again (NumberOfRecasts), so that the first frame after a
+   * camera move already shows what the frames after it show. Frames of an unchanged view
+   * wait for nothing.
+   */
+  vtkGetMacro(NumberOfSynchronousReductions, int);
+  vtkGetMacro(NumberOfRecasts, int);
+  ///@}
 
   ///@{
   /// GPU times (s) of the rasterization and the reduction, from the last finished frame.
@@ -260,6 +272,12 @@ protected:
   vtkGlobeMapper();
   ~vtkGlobeMapper() override;
 
+  // The last frame's G-buffer: internal (its layout follows the precision mode), reached by
+  // tests and benchmarks through vtkGlobeMapperTesting.
+  friend class vtkGlobeMapperTesting;
+  vtkTextureObject* GetGBufferTexture();
+  vtkTextureObject* GetGBufferDepthTexture();
+
   double GridPixelsPerCell = 1.6; // 0: the fixed GridResolution
 
   bool RenderGBuffer(vtkRenderer* ren, vtkActor* act, int width, int height);
@@ -275,6 +293,8 @@ protected:
   double LastVisibleMinimumHeight = 0.0;
   bool LastFrameDrewGlobe = false;
   bool WaitForPages = false;
+  int NumberOfSynchronousReductions = 0;
+  int NumberOfRecasts = 0;
 
 private:
   vtkGlobeMapper(const vtkGlobeMapper&) = delete;

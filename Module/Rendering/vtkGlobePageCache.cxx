@@ -245,7 +245,8 @@ public:
       {
         f.Data = vtkSmartPointer<vtkUnsignedCharArray>::New();
       }
-      f.Ok = job.Layer->ReadPage(KeyLevel(job.Key), KeyColumn(job.Key), KeyRow(job.Key), f.Data);
+      f.Ok =
+        job.Layer->ReadStoredPage(KeyLevel(job.Key), KeyColumn(job.Key), KeyRow(job.Key), f.Data);
       {
         std::lock_guard<std::mutex> lock(this->Mutex);
         this->Results.push_back(std::move(f));
@@ -631,7 +632,7 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
     {
       coarsest = vtkSmartPointer<vtkUnsignedCharArray>::New();
     }
-    if (!layer->ReadPage(s.Levels - 1, 0, 0, coarsest))
+    if (!layer->ReadStoredPage(s.Levels - 1, 0, 0, coarsest))
     {
       in.Refuse(layer); // the layer reported why
       continue;

@@ -103,6 +103,7 @@
 #include "vtkGlobeLayer.h"
 #include "vtkGlobeLayerSet.h"
 #include "vtkGlobeMapper.h"
+#include "vtkGlobeMapperTesting.h"
 #include "vtkImageData.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -317,7 +318,7 @@ double TextureBytes(vtkTextureObject* t)
 vtkSmartPointer<vtkTexture> ImageryTexture(vtkGlobeLayer* layer)
 {
   auto* rgba = vtkUnsignedCharArray::SafeDownCast(layer->GetData());
-  const int w = layer->GetWidth(), h = layer->GetHeight();
+  const int w = layer->GetNumberOfColumns(), h = layer->GetNumberOfRows();
   vtkNew<vtkUnsignedCharArray> pixels;
   pixels->SetNumberOfComponents(4);
   pixels->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
@@ -1500,7 +1501,7 @@ void Benchmark::MeasureMemory(Row& row, bool globe)
   if (globe)
   {
     row.Mem.GpuLayers = static_cast<double>(m->GetLayerSet()->GetTextureMemory());
-    row.Mem.GpuGBuffer = TextureBytes(m->GetGBufferTexture()) + TextureBytes(m->GetGBufferDepthTexture());
+    row.Mem.GpuGBuffer = TextureBytes(vtkGlobeMapperTesting::GetGBufferTexture(m)) + TextureBytes(vtkGlobeMapperTesting::GetGBufferDepthTexture(m));
     vtkGlobeGridPass* g = m->GetGridPass();
     row.Mem.GpuGrid = TextureBytes(g->GetDirectionTexture()) + TextureBytes(g->GetPositionTexture()) +
       TextureBytes(g->GetHeightTexture());
@@ -1988,7 +1989,7 @@ int Benchmark::Run()
   if (!this->Opt.EffectsOnly)
   {
     const double* radii = this->Scene.Body->GetRadii();
-    const double textureBytes = 4.0 * this->Color->GetWidth() * this->Color->GetHeight() * 4 / 3;
+    const double textureBytes = 4.0 * this->Color->GetNumberOfColumns() * this->Color->GetNumberOfRows() * 4 / 3;
     {
       vtkNew<vtkTexturedSphereSource> sphere;
       sphere->SetThetaResolution(this->Opt.Sphere.X);

@@ -214,8 +214,8 @@ int main(int argc, char* argv[])
   const std::string imageryPlain = out + "/planet_imagery_" + tag + "_plain.tif";
   vtkDataArray* h = relief->GetData();
   vtkDataArray* c = world->GetData();
-  const int rw = relief->GetWidth(), rh = relief->GetHeight();
-  const int cw = world->GetWidth(), ch = world->GetHeight();
+  const int rw = relief->GetNumberOfColumns(), rh = relief->GetNumberOfRows();
+  const int cw = world->GetNumberOfColumns(), ch = world->GetNumberOfRows();
   // Relief: the 2-degree heights plus up to +-600 m of detail, more over land.
   bool ok = WritePlain(heightsPlain, W, H, 1, true, [&](int y, unsigned char* row) {
     auto* v = reinterpret_cast<float*>(row);

@@ -63,7 +63,7 @@ void Frame(vtkGlobeTest::Scene& scene, Phase& phase)
   ++phase.Frames;
   phase.GLErrors += vtkGlobeTest::NoGLError() ? 0 : 1;
   const std::vector<float> depth = vtkGlobeTest::ReadDepth(scene.Window);
-  bool bad = vtkGlobeTest::CountNaN(vtkGlobeTest::ReadTexture(scene.Mapper->GetGBufferTexture())) > 0;
+  bool bad = vtkGlobeTest::CountNaN(vtkGlobeTest::ReadTexture(vtkGlobeMapperTesting::GetGBufferTexture(scene.Mapper))) > 0;
   for (float d : depth)
   {
     bad |= !std::isfinite(d);

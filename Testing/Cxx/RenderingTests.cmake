@@ -37,7 +37,10 @@ list(APPEND globe_rendering_tests
 # Precision: sub-pixel jitter of the globe and a companion actor; the satellite over the limb.
 list(APPEND globe_rendering_tests
   TestGlobeJitter.cxx
-  TestGlobeSatelliteLimb.cxx)
+  TestGlobeSatelliteLimb.cxx
+  TestGlobeTemporalStability.cxx
+  TestGlobeFeatherReach.cxx
+  TestGlobeColorMatch.cxx)
 # Geodetic precision (issue 5): 0.5 m data at +-180 degrees and +-80 degrees as at (0, 0).
 list(APPEND globe_rendering_tests
   TestGlobeGeodeticPrecision.cxx)
@@ -129,7 +132,8 @@ set(globe_streamed_tests
   TestGlobeMoonSurface
   TestGlobeSharedDepth
   TestGlobeProjectedLayers
-  TestGlobeNorthPole)
+  TestGlobeNorthPole
+  TestGlobeTemporalStability)
 foreach (test_name IN LISTS globe_streamed_tests)
   add_test(NAME "Streamed.${test_name}"
     COMMAND GlobeRenderingCxxTests "${test_name}"

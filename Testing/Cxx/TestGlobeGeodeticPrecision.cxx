@@ -211,7 +211,7 @@ void MeasureChecker(vtkGlobeTest::Scene& scene, const Place& place, Measure& m)
 
   const int* size = scene.Window->GetSize();
   const std::vector<unsigned char> pixels = vtkGlobeTest::ReadPixels(scene.Window);
-  const std::vector<float> gbuffer = vtkGlobeTest::ReadTexture(scene.Mapper->GetGBufferTexture());
+  const std::vector<float> gbuffer = vtkGlobeTest::ReadTexture(vtkGlobeMapperTesting::GetGBufferTexture(scene.Mapper));
   const double* eye = scene.Renderer->GetActiveCamera()->GetPosition();
   std::vector<double> gErrors;
   for (int y = 0; y < size[1]; ++y)

@@ -51,7 +51,7 @@ int TestGlobeInsets(int argc, char* argv[])
     const std::vector<float> depth = vtkGlobeTest::ReadDepth(scene.Window);
     double e[4];
     inset.Layer->GetGeographicExtent(e);
-    const double texel = (e[1] - e[0]) / inset.Layer->GetWidth();
+    const double texel = (e[1] - e[0]) / inset.Layer->GetNumberOfColumns();
     int inside = 0, wrong = 0;
     double sum = 0.0;
     for (int y = 0; y < size[1]; y += 2)

@@ -220,7 +220,7 @@ void MeasureGlobe(vtkGlobeTest::Scene& scene, vtkGlobeDepthPass* pass, const dou
   vtkCamera* camera = scene.Renderer->GetActiveCamera();
   const Projector project(scene.Renderer);
   const std::vector<float> depth = vtkGlobeTest::ReadDepth(scene.Window);
-  const std::vector<float> gbuffer = vtkGlobeTest::ReadTexture(scene.Mapper->GetGBufferTexture());
+  const std::vector<float> gbuffer = vtkGlobeTest::ReadTexture(vtkGlobeMapperTesting::GetGBufferTexture(scene.Mapper));
   std::vector<double> slips;
   for (int y = 1; y < H; y += 3)
   {

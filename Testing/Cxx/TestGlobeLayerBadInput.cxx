@@ -59,8 +59,8 @@ bool Cleared(vtkGlobeLayer* layer)
 {
   double e[4];
   layer->GetGeographicExtent(e);
-  return !layer->IsValid() && !layer->GetData() && layer->GetWidth() == 0 &&
-    layer->GetHeight() == 0 && layer->GetNumberOfComponents() == 0 && layer->GetModelType() == 0 &&
+  return !layer->IsValid() && !layer->GetData() && layer->GetNumberOfColumns() == 0 &&
+    layer->GetNumberOfRows() == 0 && layer->GetNumberOfComponents() == 0 && layer->GetModelType() == 0 &&
     layer->GetEPSG() == 0 && std::isnan(e[0]) && layer->GetMinimumValue() == 0 &&
     layer->GetMaximumValue() == 0 && !layer->IsGlobal();
 }

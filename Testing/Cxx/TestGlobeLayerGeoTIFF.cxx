@@ -226,7 +226,7 @@ int TestGlobeLayerGeoTIFF(int, char*[])
   bool ok = false;
   const auto value = [&](int row, int col)
   {
-    return layer->GetData()->GetComponent(static_cast<vtkIdType>(row) * layer->GetWidth() + col, 0);
+    return layer->GetData()->GetComponent(static_cast<vtkIdType>(row) * layer->GetNumberOfColumns() + col, 0);
   };
 
   std::printf("Raster types and transforms:\n");

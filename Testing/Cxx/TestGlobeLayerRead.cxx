@@ -86,7 +86,7 @@ void CheckSRTM(const char* name, vtkIdType expectedVoids, double expectedMin, do
   layer->SetFileName((Data + "/earth/" + name).c_str());
   layer->SetFillVoids(false);
   Expect(layer->Update() && layer->IsValid(), "Update() succeeds (FillVoids off)");
-  const int w = layer->GetWidth(), h = layer->GetHeight();
+  const int w = layer->GetNumberOfColumns(), h = layer->GetNumberOfRows();
   Expect(w == 1201 && h == 1201 && layer->GetNumberOfComponents() == 1,
     vtkGlobeTest::Printf("1201 x 1201 x 1: %d x %d x %d", w, h, layer->GetNumberOfComponents()));
   Expect(layer->GetModelType() == vtkGlobeLayer::Geographic && layer->GetEPSG() == 4326,
@@ -218,7 +218,7 @@ int TestGlobeLayerRead(int, char*[])
     Expect(layer->GetRole() == vtkGlobeLayer::Height &&
         std::string(layer->GetRoleAsString()) == "Height",
       "role Height (the default)");
-    Expect(layer->GetWidth() == 180 && layer->GetHeight() == 90 &&
+    Expect(layer->GetNumberOfColumns() == 180 && layer->GetNumberOfRows() == 90 &&
         layer->GetNumberOfComponents() == 1 && layer->GetData()->GetNumberOfTuples() == 16200 &&
         vtkFloatArray::SafeDownCast(layer->GetData()),
       vtkGlobeTest::Printf("180 x 90 x 1, a vtkFloatArray of %lld values",
@@ -270,10 +270,10 @@ int TestGlobeLayerRead(int, char*[])
     layer->SetRoleToColor();
     Expect(layer->Update() && !observer->GetError(), "Update() as a Color layer succeeds");
     auto* rgba = vtkUnsignedCharArray::SafeDownCast(layer->GetData());
-    Expect(rgba && layer->GetWidth() == 2048 && layer->GetHeight() == 1024 &&
+    Expect(rgba && layer->GetNumberOfColumns() == 2048 && layer->GetNumberOfRows() == 1024 &&
         layer->GetNumberOfComponents() == 4 && rgba->GetNumberOfComponents() == 4,
       vtkGlobeTest::Printf("2048 x 1024, a 4-component (RGBA) vtkUnsignedCharArray: %d x %d x %d",
-        layer->GetWidth(), layer->GetHeight(), layer->GetNumberOfComponents()));
+        layer->GetNumberOfColumns(), layer->GetNumberOfRows(), layer->GetNumberOfComponents()));
     ExpectExtent(layer, -180, 180, -90, 90, 0.17578125, 0.0);
     Expect(layer->IsGlobal() && layer->GetEPSG() == 4326, "global, EPSG 4326");
     auto in = OIIO::ImageInput::open(Data + "/earth/world.tif");
@@ -318,9 +318,9 @@ int TestGlobeLayerRead(int, char*[])
     layer->GetProjectedGeoTransform(origin, size);
     layer->GetGeographicExtent(e);
     Expect(layer->GetModelType() == vtkGlobeLayer::Projected && layer->GetEPSG() == 32610 &&
-        layer->GetWidth() == 876 && layer->GetHeight() == 1252,
+        layer->GetNumberOfColumns() == 876 && layer->GetNumberOfRows() == 1252,
       vtkGlobeTest::Printf(
-        "Projected, EPSG %d, %d x %d", layer->GetEPSG(), layer->GetWidth(), layer->GetHeight()));
+        "Projected, EPSG %d, %d x %d", layer->GetEPSG(), layer->GetNumberOfColumns(), layer->GetNumberOfRows()));
     Expect(Near(origin[0], 575993.04, 0.005) && Near(origin[1], 5207152.44, 0.005) &&
         size[0] == 90.0 && size[1] == 90.0,
       vtkGlobeTest::Printf("origin (%.4f, %.4f) m, pixel %g x %g m", origin[0], origin[1], size[0], size[1]));
@@ -337,9 +337,9 @@ int TestGlobeLayerRead(int, char*[])
       layer->Update() && !observer->GetError(), "world_north_polar_3413.tif: Update() succeeds");
     layer->GetProjectedGeoTransform(origin, size);
     Expect(layer->GetModelType() == vtkGlobeLayer::Projected && layer->GetEPSG() == 3413 &&
-        layer->GetWidth() == 1024 && layer->GetHeight() == 1024,
+        layer->GetNumberOfColumns() == 1024 && layer->GetNumberOfRows() == 1024,
       vtkGlobeTest::Printf(
-        "Projected, EPSG %d, %d x %d", layer->GetEPSG(), layer->GetWidth(), layer->GetHeight()));
+        "Projected, EPSG %d, %d x %d", layer->GetEPSG(), layer->GetNumberOfColumns(), layer->GetNumberOfRows()));
     Expect(origin[0] == -4.0e6 && origin[1] == 4.0e6 && size[0] == 7812.5 && size[1] == 7812.5 &&
         origin[0] + 1024 * size[0] == 4.0e6,
       vtkGlobeTest::Printf(
@@ -360,7 +360,7 @@ int TestGlobeLayerRead(int, char*[])
       vtkGlobeTest::Printf("datum semi-axes %.1f, %.1f m", layer->GetDatumSemiMajorAxis(),
         layer->GetDatumSemiMinorAxis()));
     ExpectExtent(layer, -180, 180, -90, 90, 0.3515625, 0.0);
-    Expect(layer->IsGlobal() && layer->GetWidth() == 1024 && layer->GetHeight() == 512,
+    Expect(layer->IsGlobal() && layer->GetNumberOfColumns() == 1024 && layer->GetNumberOfRows() == 512,
       "global, 1024 x 512");
   }
 
@@ -411,10 +411,21 @@ int TestGlobeLayerRead(int, char*[])
     Expect(layer->GetNumberOfLoads() == 1 && std::string(layer->GetName()) == "Relief",
       vtkGlobeTest::Printf(
         "SetName() and Modified() alone do not re-read (%d loads)", layer->GetNumberOfLoads()));
+    const double highest = layer->GetMaximumValue();
+    const float first = static_cast<float>(layer->GetData()->GetComponent(1000, 0));
     layer->SetValueScale(3.0);
     layer->Update();
-    Expect(layer->GetNumberOfLoads() == 2,
-      vtkGlobeTest::Printf("SetValueScale(3) re-reads (%d loads)", layer->GetNumberOfLoads()));
+    Expect(layer->GetNumberOfLoads() == 1 && layer->GetMaximumValue() == static_cast<float>(3.0 * highest) &&
+        layer->GetData()->GetComponent(1000, 0) == static_cast<float>(3.0 * first),
+      vtkGlobeTest::Printf("SetValueScale(3) maps the heights in place, reads nothing (%d loads, "
+                           "maximum %g m)", layer->GetNumberOfLoads(), layer->GetMaximumValue()));
+    layer->SetValueScale(0.0);
+    layer->Update();
+    layer->SetValueScale(3.0);
+    layer->Update();
+    Expect(layer->GetNumberOfLoads() == 2 && layer->GetMaximumValue() == static_cast<float>(3.0 * highest),
+      vtkGlobeTest::Printf("to a scale of 0 in place, from it (no inverse) it reads again (%d loads)",
+        layer->GetNumberOfLoads()));
     layer->SetValueScale(3.0);
     layer->SetFileName(relief.c_str());
     layer->Update();
@@ -423,7 +434,7 @@ int TestGlobeLayerRead(int, char*[])
         layer->GetNumberOfLoads()));
     layer->SetFileName((Data + "/earth/mt_rainier_90m.tif").c_str());
     layer->Update();
-    Expect(layer->GetNumberOfLoads() == 3 && layer->GetWidth() == 1201,
+    Expect(layer->GetNumberOfLoads() == 3 && layer->GetNumberOfColumns() == 1201,
       vtkGlobeTest::Printf("a new FileName re-reads (%d loads)", layer->GetNumberOfLoads()));
     layer->SetFillVoids(false);
     layer->Update();

@@ -55,7 +55,7 @@ void ForEachTexel(vtkGlobeLayer* layer, const Lambert93& l93, F&& f)
 {
   double e[4];
   layer->GetGeographicExtent(e);
-  const int w = layer->GetWidth(), h = layer->GetHeight();
+  const int w = layer->GetNumberOfColumns(), h = layer->GetNumberOfRows();
   for (int j = 0; j < h; ++j)
   {
     for (int i = 0; i < w; ++i)
@@ -90,7 +90,7 @@ int TestGlobeLayerReprojection(int, char*[])
       e[0] > -6.0 && e[1] < 10.0 && e[2] > 41.0 && e[3] < 52.0,
     vtkGlobeTest::Printf("loaded, reprojected from EPSG:%d into %d x %d geographic texels, box "
                          "W %.3f E %.3f S %.3f N %.3f",
-      image->GetReprojectedFromEPSG(), image->GetWidth(), image->GetHeight(), e[0], e[1], e[2],
+      image->GetReprojectedFromEPSG(), image->GetNumberOfColumns(), image->GetNumberOfRows(), e[0], e[1], e[2],
       e[3]));
   vtkDataArray* pixels = image->GetData();
   int checked = 0, wrong = 0, outside = 0, transparentOutside = 0;

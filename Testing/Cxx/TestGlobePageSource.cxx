@@ -649,8 +649,8 @@ int TestGlobePageSource(int, char*[])
     source->SetFileName(file.c_str());
     source->SetPageSize(64);
     Grid g0;
-    g0.W = layer->GetWidth();
-    g0.H = layer->GetHeight();
+    g0.W = layer->GetNumberOfColumns();
+    g0.H = layer->GetNumberOfRows();
     vtkDataArray* data = layer->GetData();
     for (vtkIdType i = 0; data && i < data->GetNumberOfTuples(); ++i)
     {

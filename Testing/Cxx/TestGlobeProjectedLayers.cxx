@@ -295,7 +295,7 @@ void PartSynthetic()
         {
           continue;
         }
-        const double x = u * layers[l]->GetWidth(), y = vv * layers[l]->GetHeight();
+        const double x = u * layers[l]->GetNumberOfColumns(), y = vv * layers[l]->GetNumberOfRows();
         const double margin = 0.03;
         edge = x - std::floor(x) < margin || std::ceil(x) - x < margin || y - std::floor(y) < margin ||
           std::ceil(y) - y < margin;

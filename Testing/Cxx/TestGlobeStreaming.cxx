@@ -121,7 +121,7 @@ FrameCheck CheckFrame(vtkGlobeTest::Scene& scene, const Levels& levels)
   const int* size = scene.Window->GetSize();
   const std::vector<unsigned char> rgb = vtkGlobeTest::ReadPixels(scene.Window);
   const std::vector<float> depth = vtkGlobeTest::ReadDepth(scene.Window);
-  const std::vector<float> g = vtkGlobeTest::ReadTexture(scene.Mapper->GetGBufferTexture());
+  const std::vector<float> g = vtkGlobeTest::ReadTexture(vtkGlobeMapperTesting::GetGBufferTexture(scene.Mapper));
   const int W = size[0], H = size[1];
   std::vector<std::array<double, 2>> uv(static_cast<size_t>(W) * H, { NAN, NAN });
   for (size_t i = 0; i < uv.size(); ++i)

@@ -114,7 +114,7 @@ Count CheckFrame(vtkGlobeTest::Scene& scene, double margin)
   const int* size = scene.Window->GetSize();
   const std::vector<unsigned char> rgb = vtkGlobeTest::ReadPixels(scene.Window);
   const std::vector<float> depth = vtkGlobeTest::ReadDepth(scene.Window);
-  const std::vector<float> g = vtkGlobeTest::ReadTexture(scene.Mapper->GetGBufferTexture());
+  const std::vector<float> g = vtkGlobeTest::ReadTexture(vtkGlobeMapperTesting::GetGBufferTexture(scene.Mapper));
   const double texel = 360.0 / Width;
   for (size_t i = 0; i < static_cast<size_t>(size[0]) * size[1]; ++i)
   {

@@ -79,7 +79,7 @@ void PartGeoid()
   terrain->Update();
   double e[4];
   inset->GetGeographicExtent(e);
-  const int w = inset->GetWidth(), h = inset->GetHeight();
+  const int w = inset->GetNumberOfColumns(), h = inset->GetNumberOfRows();
   vtkDataArray* posts = inset->GetData();
   std::mt19937 random(13);
   // The interior: more than the 8-texel feathered border (and a texel) from every edge.

@@ -186,7 +186,7 @@ void PartSummits(ProjGeoid& proj)
       // The highest post near the summit, and its texel's extent.
       double e[4];
       inset->GetGeographicExtent(e);
-      const int w = inset->GetWidth(), h = inset->GetHeight();
+      const int w = inset->GetNumberOfColumns(), h = inset->GetNumberOfRows();
       const double dx = (e[1] - e[0]) / w, dy = (e[3] - e[2]) / h;
       vtkDataArray* data = vtkGlobeTest::WholeData(inset);
       int bi = 0, bj = 0;

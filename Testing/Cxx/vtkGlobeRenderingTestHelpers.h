@@ -14,6 +14,7 @@
 #include "vtkGlobeLayerTestHelpers.h"
 #include "vtkGlobeMapProjection.h"
 #include "vtkGlobeMapper.h"
+#include "vtkGlobeMapperTesting.h"
 #include "vtkGlobePageCache.h"
 #include "vtkGlobeProjectiveGrid.h"
 #include "vtkGlobeTerrain.h"
@@ -260,8 +261,8 @@ inline bool LayerUV(vtkGlobeLayer* layer, double lon, double lat, double& u, dou
       return false;
     }
     layer->GetProjectedGeoTransform(origin, pixel);
-    u = (xy[0] - origin[0]) / (pixel[0] * layer->GetWidth());
-    v = (origin[1] - xy[1]) / (pixel[1] * layer->GetHeight());
+    u = (xy[0] - origin[0]) / (pixel[0] * layer->GetNumberOfColumns());
+    v = (origin[1] - xy[1]) / (pixel[1] * layer->GetNumberOfRows());
     return true;
   }
   double e[4];
@@ -311,7 +312,7 @@ inline bool SampleLayer(vtkGlobeLayer* layer, double lon, double lat, int compon
   {
     return false;
   }
-  const int w = layer->GetWidth(), h = layer->GetHeight();
+  const int w = layer->GetNumberOfColumns(), h = layer->GetNumberOfRows();
   vtkDataArray* data = WholeData(layer);
   const bool wrap = layer->IsGlobal();
   auto at = [&](int i, int j) {
@@ -380,7 +381,7 @@ inline double FinestTexel(const std::vector<vtkGlobeLayer*>& layers, double lon,
       }
       double e[4];
       layer->GetGeographicExtent(e);
-      best = std::min(best, (e[3] - e[2]) / layer->GetHeight() * radius * 3.14159265358979 / 180.0);
+      best = std::min(best, (e[3] - e[2]) / layer->GetNumberOfRows() * radius * 3.14159265358979 / 180.0);
     }
   }
   return best;
@@ -407,8 +408,8 @@ inline double UVRounding(const std::vector<vtkGlobeLayer*>& layers, double lon, 
     {
       double origin[2], pixel[2];
       layer->GetProjectedGeoTransform(origin, pixel);
-      spanU = std::abs(pixel[0]) * layer->GetWidth();
-      spanV = std::abs(pixel[1]) * layer->GetHeight();
+      spanU = std::abs(pixel[0]) * layer->GetNumberOfColumns();
+      spanV = std::abs(pixel[1]) * layer->GetNumberOfRows();
     }
     else
     {
@@ -441,11 +442,11 @@ inline double CoverageWeight(vtkGlobeLayer* layer, double lon, double lat)
   const double feather = layer->GetFeatherWidth();
   if (feather > 0 && !layer->IsGlobal())
   {
-    w *= std::min(1.0, std::min(u, 1.0 - u) * layer->GetWidth() / feather);
+    w *= std::min(1.0, std::min(u, 1.0 - u) * layer->GetNumberOfColumns() / feather);
   }
   if (feather > 0 && !(e[2] <= -90.0 && e[3] >= 90.0))
   {
-    w *= std::min(1.0, std::min(v, 1.0 - v) * layer->GetHeight() / feather);
+    w *= std::min(1.0, std::min(v, 1.0 - v) * layer->GetNumberOfRows() / feather);
   }
   return w;
 }
@@ -479,7 +480,7 @@ inline double ComposedHeight(const std::vector<vtkGlobeLayer*>& layers, double l
 inline void AddWaterMaskAndNightLights(vtkGlobeMapper* mapper, vtkGlobeLayer* heights)
 {
   heights->Update();
-  const int w = heights->GetWidth(), h = heights->GetHeight();
+  const int w = heights->GetNumberOfColumns(), h = heights->GetNumberOfRows();
   std::vector<unsigned char> mask, lights;
   for (int i = 0; i < w * h; ++i)
   {
@@ -974,11 +975,11 @@ inline HardCaseResult CheckHardCase(Scene& scene, vtkGlobeDepthPass* pass, int s
   camera->GetClippingRange(r.NearPlane, r.FarPlane);
   const std::vector<float> depth = ReadDepth(scene.Window);
   r.DepthNaN = CountNaN(depth);
-  if (vtkTextureObject* g = scene.Mapper->GetGBufferTexture())
+  if (vtkTextureObject* g = vtkGlobeMapperTesting::GetGBufferTexture(scene.Mapper))
   {
     r.GBufferNaN += CountNaN(ReadTexture(g));
   }
-  if (vtkTextureObject* g = scene.Mapper->GetGBufferDepthTexture())
+  if (vtkTextureObject* g = vtkGlobeMapperTesting::GetGBufferDepthTexture(scene.Mapper))
   {
     r.GBufferNaN += CountNaN(ReadTexture(g));
   }

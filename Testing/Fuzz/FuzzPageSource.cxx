@@ -51,7 +51,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     source->SetBorder(1);
     source->SetCacheMemory(16.0);
     if (source->Open() &&
-      static_cast<double>(source->GetWidth()) * source->GetHeight() <= MaximumTexels)
+      static_cast<double>(source->GetNumberOfColumns()) * source->GetNumberOfRows() <= MaximumTexels)
     {
       double transform[4];
       source->GetGeoTransform(transform);

@@ -37,7 +37,7 @@ class Terrain:
         self.assertion = layer.Update()
         self.extent = [0.0] * 4
         layer.GetGeographicExtent(self.extent)
-        self.w, self.h = layer.GetWidth(), layer.GetHeight()
+        self.w, self.h = layer.GetNumberOfColumns(), layer.GetNumberOfRows()
         self.values = memoryview(layer.GetData()).cast("B").cast("f")
 
     def __call__(self, lon, lat):

@@ -144,7 +144,7 @@ class TestExampleViewGeoTIFF(ExampleTest):
         projection = vg.projection_of(layer)
         origin, pixel = [0.0] * 2, [0.0] * 2
         layer.GetProjectedGeoTransform(origin, pixel)
-        width, height = layer.GetWidth() * pixel[0], layer.GetHeight() * pixel[1]
+        width, height = layer.GetNumberOfColumns() * pixel[0], layer.GetNumberOfRows() * pixel[1]
         points = []
         for j in range(n):
             for i in range(n):
