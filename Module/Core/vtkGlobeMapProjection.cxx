@@ -3,13 +3,21 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 
+#include <GeographicLib/AlbersEqualArea.hpp>
 #include <GeographicLib/LambertConformalConic.hpp>
 #include <GeographicLib/PolarStereographic.hpp>
 #include <GeographicLib/TransverseMercator.hpp>
 
+#include <proj.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
 
 vtkStandardNewMacro(vtkGlobeMapProjection);
 
@@ -46,7 +54,354 @@ bool IsCylindrical(int kind)
 {
   return kind == vtkGlobeMapProjection::Geographic ||
     kind == vtkGlobeMapProjection::Equirectangular || kind == vtkGlobeMapProjection::Mercator ||
-    kind == vtkGlobeMapProjection::WebMercator;
+    kind == vtkGlobeMapProjection::WebMercator ||
+    kind == vtkGlobeMapProjection::CylindricalEqualArea;
+}
+
+// Cylindrical equal-area: the scale along the equator that makes it 1 on the standard parallel.
+double CylindricalEqualAreaScale(double f, double standardParallel)
+{
+  const double e2 = f * (2.0 - f), s = std::sin(standardParallel * Deg);
+  return std::cos(standardParallel * Deg) / std::sqrt(1.0 - e2 * s * s);
+}
+
+// The conics in map coordinates, with the false origin: GeographicLib's y is 0 at its own
+// origin (the cone's latitude of tangency), the false northing belongs to the latitude of
+// origin. One standard parallel (with a scale there) when both are equal, else two (scale 1
+// on both); polar Lambert azimuthal equal-area is the Albers conic with its standard parallel
+// at the pole. A cone with its apex at the south pole is computed as the mirror image of the
+// northern one (y -> -y, exact by symmetry): GeographicLib 1.51's AlbersEqualArea put
+// EPSG:3577's (140 E, 30 S) 6.2 Mm from PROJ's point.
+class Conic
+{
+public:
+  Conic(bool conformal, double a, double f, double phi1, double phi2, double k, double lat0,
+    double lon0, double fe, double fn)
+    : Mirror(phi1 + phi2 >= 0.0 ? 1.0 : -1.0)
+    , Lon0(lon0)
+    , FE(fe)
+    , FN(fn)
+  {
+    phi1 *= this->Mirror;
+    phi2 *= this->Mirror;
+    if (conformal)
+    {
+      this->LCC = phi1 == phi2
+        ? std::make_unique<GeographicLib::LambertConformalConic>(a, f, phi1, k)
+        : std::make_unique<GeographicLib::LambertConformalConic>(a, f, phi1, phi2, 1.0);
+    }
+    else
+    {
+      this->Albers = phi1 == phi2
+        ? std::make_unique<GeographicLib::AlbersEqualArea>(a, f, phi1, 1.0)
+        : std::make_unique<GeographicLib::AlbersEqualArea>(a, f, phi1, phi2, 1.0);
+    }
+    double x0 = 0.0, gamma = 0.0;
+    this->Raw(this->Mirror * lat0, lon0, x0, this->Y0, gamma);
+  }
+  // Map (x, y) of (lat, lon) in degrees; n: the cone constant (meridian convergence per
+  // degree of longitude).
+  void Forward(double lat, double lon, double& x, double& y) const
+  {
+    double gamma = 0.0;
+    this->Raw(this->Mirror * lat, lon, x, y, gamma);
+    x += this->FE;
+    y = this->FN + this->Mirror * (y - this->Y0);
+  }
+  double ConeConstant(double lat) const
+  {
+    double x = 0.0, y = 0.0, gamma = 0.0;
+    this->Raw(this->Mirror * lat, this->Lon0 + 1.0, x, y, gamma);
+    return std::abs(gamma);
+  }
+  // The map northing of the cone's apex, the centre of the parallels' circles, from the
+  // radius rho = k a m / n (Snyder 14-16, 15-4) of the parallel at `lat` (north of it for a
+  // northern cone). The pole is the apex of a conformal conic and of the azimuthal
+  // projection, but an arc around it on an Albers conic with two standard parallels.
+  double ApexNorthing(double a, double f, double lat) const
+  {
+    double x = 0.0, y = 0.0, gamma = 0.0, k = 1.0;
+    const double latM = this->Mirror * lat;
+    if (this->LCC)
+    {
+      this->LCC->Forward(this->Lon0, latM, this->Lon0, x, y, gamma, k);
+    }
+    else
+    {
+      this->Albers->Forward(this->Lon0, latM, this->Lon0, x, y, gamma, k);
+    }
+    const double e2 = f * (2.0 - f), s = std::sin(latM * Deg);
+    const double m = std::cos(latM * Deg) / std::sqrt(1.0 - e2 * s * s);
+    const double rho = k * a * m / this->ConeConstant(lat);
+    return this->FN + this->Mirror * (y + rho - this->Y0);
+  }
+  // False where GeographicLib's inverse does not project back to (x, y): it returns the
+  // nearest pole for points outside the image (beyond the cone's cut, the azimuthal disc).
+  bool Reverse(double x, double y, double& lat, double& lon) const
+  {
+    const double xm = x - this->FE, ym = this->Mirror * (y - this->FN) + this->Y0;
+    double gamma = 0.0, k = 1.0, xb = 0.0, yb = 0.0;
+    if (this->LCC)
+    {
+      this->LCC->Reverse(this->Lon0, xm, ym, lat, lon, gamma, k);
+    }
+    else
+    {
+      this->Albers->Reverse(this->Lon0, xm, ym, lat, lon, gamma, k);
+    }
+    this->Raw(lat, lon, xb, yb, gamma);
+    lat *= this->Mirror;
+    // On the cut (180 degrees from the central meridian) a longitude has two images.
+    const bool cut = std::abs(std::remainder(lon - this->Lon0, 360.0)) > 180.0 - 1e-7;
+    return cut || std::hypot(xb - xm, yb - ym) <= 1e-6 * (1.0 + std::hypot(xb, yb));
+  }
+
+private:
+  void Raw(double lat, double lon, double& x, double& y, double& gamma) const
+  {
+    double k = 1.0;
+    if (this->LCC)
+    {
+      this->LCC->Forward(this->Lon0, lat, lon, x, y, gamma, k);
+    }
+    else
+    {
+      this->Albers->Forward(this->Lon0, lat, lon, x, y, gamma, k);
+    }
+  }
+  double Mirror, Lon0, FE, FN, Y0 = 0.0;
+  std::unique_ptr<GeographicLib::LambertConformalConic> LCC;
+  std::unique_ptr<GeographicLib::AlbersEqualArea> Albers;
+};
+
+Conic MakeConic(vtkGlobeMapProjection* p)
+{
+  return Conic(p->GetKind() == vtkGlobeMapProjection::LambertConformalConic,
+    p->GetSemiMajorAxis(), p->GetFlattening(), p->GetStandardParallel(),
+    p->GetStandardParallel2(), p->GetScaleFactor(), p->GetLatitudeOfOrigin(),
+    p->GetCentralMeridian(), p->GetFalseEasting(), p->GetFalseNorthing());
+}
+
+// What SetFromPROJ found for one EPSG code (cached: PROJ's database is read once per code).
+struct PROJDefinition
+{
+  bool Usable = false;
+  int Kind = 0;
+  double A = 0.0, F = 0.0;
+  double CentralMeridian = 0.0, StandardParallel = 0.0, StandardParallel2 = 0.0;
+  double LatitudeOfTrueScale = 90.0, ScaleFactor = 1.0, LatitudeOfOrigin = 0.0;
+  double FalseEasting = 0.0, FalseNorthing = 0.0;
+  // The CRS's area of use (degrees), where the definition is checked against PROJ.
+  double Area[4] = { 0.0, 0.0, 0.0, 0.0 };
+};
+
+std::mutex PROJMutex;
+std::map<int, PROJDefinition>& PROJDefinitions()
+{
+  static std::map<int, PROJDefinition> definitions;
+  return definitions;
+}
+
+// A PROJ context and the objects made in it, released together.
+struct PROJScope
+{
+  PJ_CONTEXT* Context = proj_context_create();
+  std::vector<PJ*> Objects;
+  PROJScope() { proj_log_level(this->Context, PJ_LOG_NONE); }
+  ~PROJScope()
+  {
+    for (PJ* o : this->Objects)
+    {
+      proj_destroy(o);
+    }
+    proj_context_destroy(this->Context);
+  }
+  PJ* Keep(PJ* o)
+  {
+    if (o)
+    {
+      this->Objects.push_back(o);
+    }
+    return o;
+  }
+};
+
+// +-90 for a latitude within rounding of a pole (PROJ gives degrees through radians).
+double Pole(double lat)
+{
+  return std::abs(std::abs(lat) - 90.0) < 1e-9 ? std::copysign(90.0, lat) : lat;
+}
+
+// The conversion's parameters by EPSG parameter code, in degrees and metres.
+bool ReadPROJDefinition(int code, PROJDefinition& d)
+{
+  PROJScope scope;
+  PJ_CONTEXT* ctx = scope.Context;
+  const std::string name = "EPSG:" + std::to_string(code);
+  PJ* crs = scope.Keep(proj_create(ctx, name.c_str()));
+  if (!crs || proj_get_type(crs) != PJ_TYPE_PROJECTED_CRS)
+  {
+    return false;
+  }
+  // Easting and northing in metres: the raster's map units are then the projection's.
+  PJ* cs = scope.Keep(proj_crs_get_coordinate_system(ctx, crs));
+  if (!cs || proj_cs_get_axis_count(ctx, cs) != 2)
+  {
+    return false;
+  }
+  for (int i = 0; i < 2; ++i)
+  {
+    double factor = 0.0;
+    if (!proj_cs_get_axis_info(ctx, cs, i, nullptr, nullptr, nullptr, &factor, nullptr,
+          nullptr, nullptr) ||
+      factor != 1.0)
+    {
+      return false;
+    }
+  }
+  PJ* ellipsoid = scope.Keep(proj_get_ellipsoid(ctx, crs));
+  double a = 0.0, b = 0.0, inverseFlattening = 0.0;
+  int computed = 0;
+  if (!ellipsoid ||
+    !proj_ellipsoid_get_parameters(ctx, ellipsoid, &a, &b, &computed, &inverseFlattening))
+  {
+    return false;
+  }
+  d.A = a;
+  d.F = (a - b) / a;
+  PJ* conversion = scope.Keep(proj_crs_get_coordoperation(ctx, crs));
+  const char* methodCode = nullptr;
+  if (!conversion ||
+    !proj_coordoperation_get_method_info(ctx, conversion, nullptr, nullptr, &methodCode) ||
+    !methodCode)
+  {
+    return false;
+  }
+  std::map<int, double> values;
+  const int count = proj_coordoperation_get_param_count(ctx, conversion);
+  for (int i = 0; i < count; ++i)
+  {
+    const char* parameterCode = nullptr;
+    const char* category = nullptr;
+    double value = NaN, toSI = NaN;
+    if (!proj_coordoperation_get_param(ctx, conversion, i, nullptr, nullptr, &parameterCode,
+          &value, nullptr, &toSI, nullptr, nullptr, nullptr, &category) ||
+      !parameterCode || !category)
+    {
+      return false;
+    }
+    const std::string c = category;
+    values[std::atoi(parameterCode)] = c == "angular" ? value * toSI / Deg
+      : (c == "linear" || c == "scale")                ? value * toSI
+                                                       : NaN;
+  }
+  auto get = [&](std::initializer_list<int> codes, double fallback) {
+    for (int c : codes)
+    {
+      auto it = values.find(c);
+      if (it != values.end())
+      {
+        return it->second;
+      }
+    }
+    return fallback;
+  };
+  // EPSG parameters: 8801/8802 latitude/longitude of natural origin, 8805 its scale,
+  // 8806/8807 false easting/northing, 8821/8822 latitude/longitude of false origin, 8823/8824
+  // first/second standard parallel, 8826/8827 easting/northing at the false origin, 8832
+  // latitude and 8833 longitude of the standard parallel's origin (polar stereographic B).
+  d.FalseEasting = get({ 8806, 8826 }, 0.0);
+  d.FalseNorthing = get({ 8807, 8827 }, 0.0);
+  d.CentralMeridian = get({ 8802, 8822, 8833 }, 0.0);
+  const int method = std::atoi(methodCode);
+  switch (method)
+  {
+    case 9807: // transverse Mercator
+      d.Kind = vtkGlobeMapProjection::TransverseMercator;
+      d.LatitudeOfOrigin = get({ 8801 }, NaN);
+      d.ScaleFactor = get({ 8805 }, NaN);
+      break;
+    case 9810: // polar stereographic (variant A): the scale at the pole
+    {
+      const double lat0 = Pole(get({ 8801 }, NaN));
+      if (std::abs(lat0) != 90.0)
+      {
+        return false;
+      }
+      d.Kind = vtkGlobeMapProjection::PolarStereographic;
+      d.LatitudeOfTrueScale = lat0;
+      d.ScaleFactor = get({ 8805 }, NaN);
+      break;
+    }
+    case 9829: // polar stereographic (variant B): true scale at a standard parallel
+      d.Kind = vtkGlobeMapProjection::PolarStereographic;
+      d.LatitudeOfTrueScale = get({ 8832 }, NaN);
+      d.ScaleFactor = 1.0;
+      break;
+    case 9804: // Mercator (variant A): the scale on the equator
+      d.Kind = vtkGlobeMapProjection::Mercator;
+      d.ScaleFactor = get({ 8805 }, NaN);
+      break;
+    case 9805: // Mercator (variant B): true scale on a standard parallel
+      d.Kind = vtkGlobeMapProjection::Mercator;
+      d.StandardParallel = get({ 8823 }, NaN);
+      break;
+    case 9801: // Lambert conformal conic (1SP)
+      d.Kind = vtkGlobeMapProjection::LambertConformalConic;
+      d.LatitudeOfOrigin = d.StandardParallel = d.StandardParallel2 = get({ 8801 }, NaN);
+      d.ScaleFactor = get({ 8805 }, NaN);
+      break;
+    case 9802: // Lambert conformal conic (2SP)
+    case 9822: // Albers equal area
+      d.Kind = method == 9802 ? vtkGlobeMapProjection::LambertConformalConic
+                              : vtkGlobeMapProjection::AlbersEqualArea;
+      d.LatitudeOfOrigin = get({ 8821 }, NaN);
+      d.StandardParallel = get({ 8823 }, NaN);
+      d.StandardParallel2 = get({ 8824 }, NaN);
+      break;
+    case 9820: // Lambert azimuthal equal area: polar aspects only
+    {
+      const double lat0 = Pole(get({ 8801 }, NaN));
+      if (std::abs(lat0) != 90.0)
+      {
+        return false;
+      }
+      d.Kind = vtkGlobeMapProjection::LambertAzimuthalEqualArea;
+      d.LatitudeOfOrigin = d.StandardParallel = d.StandardParallel2 = lat0;
+      break;
+    }
+    case 9835: // Lambert cylindrical equal area
+      d.Kind = vtkGlobeMapProjection::CylindricalEqualArea;
+      d.StandardParallel = get({ 8823 }, NaN);
+      break;
+    default:
+      return false;
+  }
+  for (double v : { d.CentralMeridian, d.StandardParallel, d.StandardParallel2,
+         d.LatitudeOfTrueScale, d.ScaleFactor, d.LatitudeOfOrigin, d.FalseEasting,
+         d.FalseNorthing })
+  {
+    if (!Finite(v))
+    {
+      return false;
+    }
+  }
+  double west = -180.0, south = -90.0, east = 180.0, north = 90.0;
+  if (proj_get_area_of_use(ctx, crs, &west, &south, &east, &north, nullptr) && west > -1000.0)
+  {
+    d.Area[0] = west;
+    d.Area[1] = east < west ? east + 360.0 : east;
+    d.Area[2] = south;
+    d.Area[3] = north;
+  }
+  else
+  {
+    d.Area[0] = -180.0;
+    d.Area[1] = 180.0;
+    d.Area[2] = -90.0;
+    d.Area[3] = 90.0;
+  }
+  return true;
 }
 }
 
@@ -71,6 +426,14 @@ const char* vtkGlobeMapProjection::GetKindAsString()
       return "WebMercator";
     case TransverseMercator:
       return "TransverseMercator";
+    case LambertConformalConic:
+      return "LambertConformalConic";
+    case AlbersEqualArea:
+      return "AlbersEqualArea";
+    case LambertAzimuthalEqualArea:
+      return "LambertAzimuthalEqualArea";
+    case CylindricalEqualArea:
+      return "CylindricalEqualArea";
   }
   return "unknown";
 }
@@ -108,6 +471,7 @@ void vtkGlobeMapProjection::SetParameters(int kind, double centralMeridian,
   this->Kind = kind;
   this->CentralMeridian = centralMeridian;
   this->StandardParallel = standardParallel;
+  this->StandardParallel2 = standardParallel;
   this->LatitudeOfTrueScale = latitudeOfTrueScale;
   this->ScaleFactor = scaleFactor;
   this->LatitudeOfOrigin = latitudeOfOrigin;
@@ -168,6 +532,68 @@ bool vtkGlobeMapProjection::SetToUTM(int zone, bool north)
   return true;
 }
 
+void vtkGlobeMapProjection::SetToLambertConformalConic(double standardParallel1,
+  double standardParallel2, double latitudeOfOrigin, double centralMeridian, double falseEasting,
+  double falseNorthing)
+{
+  this->SetParameters(LambertConformalConic, centralMeridian, standardParallel1, 90.0, 1.0,
+    latitudeOfOrigin, falseEasting, falseNorthing);
+  this->StandardParallel2 = standardParallel2;
+}
+
+void vtkGlobeMapProjection::SetToLambertConformalConic1SP(double latitudeOfOrigin,
+  double centralMeridian, double scaleFactor, double falseEasting, double falseNorthing)
+{
+  this->SetParameters(LambertConformalConic, centralMeridian, latitudeOfOrigin, 90.0,
+    scaleFactor, latitudeOfOrigin, falseEasting, falseNorthing);
+}
+
+void vtkGlobeMapProjection::SetToAlbersEqualArea(double standardParallel1,
+  double standardParallel2, double latitudeOfOrigin, double centralMeridian, double falseEasting,
+  double falseNorthing)
+{
+  this->SetParameters(AlbersEqualArea, centralMeridian, standardParallel1, 90.0, 1.0,
+    latitudeOfOrigin, falseEasting, falseNorthing);
+  this->StandardParallel2 = standardParallel2;
+}
+
+void vtkGlobeMapProjection::SetToLambertAzimuthalEqualArea(
+  double latitudeOfOrigin, double centralMeridian, double falseEasting, double falseNorthing)
+{
+  const double pole = latitudeOfOrigin >= 0.0 ? 90.0 : -90.0;
+  this->SetParameters(LambertAzimuthalEqualArea, centralMeridian, pole, 90.0, 1.0, pole,
+    falseEasting, falseNorthing);
+}
+
+void vtkGlobeMapProjection::SetToCylindricalEqualArea(
+  double standardParallel, double centralMeridian, double falseEasting, double falseNorthing)
+{
+  this->SetParameters(CylindricalEqualArea, centralMeridian, standardParallel, 90.0, 1.0, 0.0,
+    falseEasting, falseNorthing);
+}
+
+double vtkGlobeMapProjection::GetApexHemisphere()
+{
+  switch (this->Kind)
+  {
+    case PolarStereographic:
+      return this->LatitudeOfTrueScale > 0.0 ? 1.0 : -1.0;
+    case LambertConformalConic:
+    case AlbersEqualArea:
+      return this->StandardParallel + this->StandardParallel2 >= 0.0 ? 1.0 : -1.0;
+    case LambertAzimuthalEqualArea:
+      return this->LatitudeOfOrigin >= 0.0 ? 1.0 : -1.0;
+    default:
+      return 1.0;
+  }
+}
+
+bool vtkGlobeMapProjection::IsConic()
+{
+  return this->Kind == LambertConformalConic || this->Kind == AlbersEqualArea ||
+    this->Kind == LambertAzimuthalEqualArea;
+}
+
 //------------------------------------------------------------------------------
 bool vtkGlobeMapProjection::SetFromEPSG(int code)
 {
@@ -175,8 +601,11 @@ bool vtkGlobeMapProjection::SetFromEPSG(int code)
   {
     vtkErrorMacro(<< "SetFromEPSG: EPSG:" << code
                   << " is not a supported projection (supported: 4326, 4087, 32662, 3413, 3031, "
-                     "3995, 3976, 3032, 32661, 32761, 3395, 3857, 326zz and 327zz); the "
-                     "projection is unchanged.");
+                     "3995, 3976, 3032, 32661, 32761, 3395, 3857, 326zz and 327zz, and codes "
+                     "whose definition in PROJ's database is transverse Mercator, polar "
+                     "stereographic, Mercator, Lambert conformal conic, Albers, polar Lambert "
+                     "azimuthal equal-area or Lambert cylindrical equal-area in metres on a "
+                     "datum PROJ does not shift against WGS 84); the projection is unchanged.");
     return false;
   }
   return true;
@@ -235,13 +664,88 @@ bool vtkGlobeMapProjection::SetFromEPSGQuietly(int code)
   {
     this->SetToUTM(code % 100, code < 32700);
   }
-  else
+  else if (!this->SetFromPROJ(code))
   {
     this->SemiMajorAxis = a;
     this->Flattening = f;
     return false;
   }
   this->EPSG = code;
+  return true;
+}
+
+bool vtkGlobeMapProjection::SetFromPROJ(int code)
+{
+  if (code <= 0)
+  {
+    return false;
+  }
+  PROJDefinition d;
+  {
+    std::lock_guard<std::mutex> lock(PROJMutex);
+    auto& definitions = PROJDefinitions();
+    auto it = definitions.find(code);
+    if (it != definitions.end())
+    {
+      d = it->second;
+    }
+    else
+    {
+      d.Usable = ReadPROJDefinition(code, d);
+      // Checked against PROJ's own transformation from EPSG:4326 (with whatever datum shift
+      // PROJ applies): a grid over the CRS's area of use must agree within 1 mm.
+      if (d.Usable)
+      {
+        vtkNew<vtkGlobeMapProjection> candidate;
+        candidate->SemiMajorAxis = d.A;
+        candidate->Flattening = d.F;
+        candidate->SetParameters(d.Kind, d.CentralMeridian, d.StandardParallel,
+          d.LatitudeOfTrueScale, d.ScaleFactor, d.LatitudeOfOrigin, d.FalseEasting,
+          d.FalseNorthing);
+        candidate->StandardParallel2 = d.StandardParallel2;
+        PROJScope scope;
+        const std::string target = "EPSG:" + std::to_string(code);
+        PJ* raw = scope.Keep(
+          proj_create_crs_to_crs(scope.Context, "EPSG:4326", target.c_str(), nullptr));
+        PJ* t = raw ? scope.Keep(proj_normalize_for_visualization(scope.Context, raw)) : nullptr;
+        int checked = 0;
+        const int n = 8;
+        for (int i = 0; t && d.Usable && i <= n; ++i)
+        {
+          for (int j = 0; d.Usable && j <= n; ++j)
+          {
+            // Cell centres: a whole-world area's edges are the same meridian twice.
+            const double lon = d.Area[0] + (d.Area[1] - d.Area[0]) * (i + 0.5) / (n + 1);
+            const double lat = d.Area[2] + (d.Area[3] - d.Area[2]) * (j + 0.5) / (n + 1);
+            double xy[2];
+            if (!candidate->ForwardInDomain(lon, lat, xy))
+            {
+              continue;
+            }
+            PJ_COORD c = proj_coord(std::remainder(lon, 360.0), lat, 0.0, 0.0);
+            c = proj_trans(t, PJ_FWD, c);
+            if (!Finite(c.xy.x) || !Finite(c.xy.y) || c.xy.x == HUGE_VAL)
+            {
+              continue;
+            }
+            d.Usable = std::hypot(c.xy.x - xy[0], c.xy.y - xy[1]) <= 1e-3;
+            ++checked;
+          }
+        }
+        d.Usable = d.Usable && t && checked >= 10;
+      }
+      definitions[code] = d;
+    }
+  }
+  if (!d.Usable)
+  {
+    return false;
+  }
+  this->SemiMajorAxis = d.A;
+  this->Flattening = d.F;
+  this->SetParameters(d.Kind, d.CentralMeridian, d.StandardParallel, d.LatitudeOfTrueScale,
+    d.ScaleFactor, d.LatitudeOfOrigin, d.FalseEasting, d.FalseNorthing);
+  this->StandardParallel2 = d.StandardParallel2;
   return true;
 }
 
@@ -264,6 +768,8 @@ double vtkGlobeMapProjection::GetMapUnitsPerRadianOfLongitude()
       return a * this->ScaleFactor * std::cos(this->StandardParallel * Deg) /
         std::sqrt(1.0 - e2 * s1 * s1);
     }
+    case CylindricalEqualArea:
+      return a * CylindricalEqualAreaScale(f, this->StandardParallel);
     default:
       return 0.0;
   }
@@ -374,6 +880,20 @@ bool vtkGlobeMapProjection::ForwardUnchecked(double lon, double lat, double xy[2
         y += this->FalseNorthing - y0;
         break;
       }
+      case LambertConformalConic:
+      case AlbersEqualArea:
+      case LambertAzimuthalEqualArea:
+        MakeConic(this).Forward(lat, lon, x, y);
+        break;
+      case CylindricalEqualArea:
+      {
+        const double k0 = CylindricalEqualAreaScale(f, this->StandardParallel);
+        const GeographicLib::AlbersEqualArea cea(a, f, 0.0, k0);
+        cea.Forward(0.0, lat, 0.0, x, y, gamma, k);
+        x = this->FalseEasting + a * k0 * (lam - this->CentralMeridian) * Deg;
+        y += this->FalseNorthing;
+        break;
+      }
     }
   }
   catch (const std::exception&)
@@ -480,6 +1000,31 @@ bool vtkGlobeMapProjection::InverseUnchecked(double x, double y, double lonLat[2
           lat, lon, gamma, k);
         break;
       }
+      case LambertConformalConic:
+      case AlbersEqualArea:
+      case LambertAzimuthalEqualArea:
+        if (!MakeConic(this).Reverse(x, y, lat, lon))
+        {
+          return false;
+        }
+        break;
+      case CylindricalEqualArea:
+      {
+        const double k0 = CylindricalEqualAreaScale(f, this->StandardParallel);
+        const GeographicLib::AlbersEqualArea cea(a, f, 0.0, k0);
+        double dummy = 0.0;
+        const double yb = y - this->FalseNorthing;
+        cea.Reverse(0.0, 0.0, yb, lat, dummy, gamma, k);
+        // Beyond the poles' northing the inverse clamps to a pole: no inverse there.
+        double xp = 0.0, yp = 0.0;
+        cea.Forward(0.0, lat < 0.0 ? -90.0 : 90.0, 0.0, xp, yp, gamma, k);
+        if (std::abs(yb) > std::abs(yp) * (1.0 + 1e-12))
+        {
+          return false;
+        }
+        lon = this->CentralMeridian + (x - this->FalseEasting) / (a * k0 * Deg);
+        break;
+      }
     }
   }
   catch (const std::exception&)
@@ -533,6 +1078,20 @@ void vtkGlobeMapProjection::GetValidDomain(double box[4])
       box[2] = this->UTM ? -80.0 : -89.0;
       box[3] = this->UTM ? 84.0 : 89.0;
       break;
+    case LambertConformalConic:
+    case AlbersEqualArea:
+    case LambertAzimuthalEqualArea:
+      // Short of the pole opposite the apex (infinitely far on the conformal conic, a
+      // circle on the azimuthal projection).
+      if (this->GetApexHemisphere() > 0.0)
+      {
+        box[2] = -89.5;
+      }
+      else
+      {
+        box[3] = 89.5;
+      }
+      break;
     default:
       break;
   }
@@ -567,6 +1126,13 @@ const char* vtkGlobeMapProjection::GetShaderFunctionName()
       return "globe_projectPolarStereographic";
     case TransverseMercator:
       return "globe_projectTransverseMercator";
+    case LambertConformalConic:
+      return "globe_projectConformalConic";
+    case AlbersEqualArea:
+    case LambertAzimuthalEqualArea:
+      return "globe_projectAlbersEqualArea";
+    case CylindricalEqualArea:
+      return "globe_projectCylindricalEqualArea";
   }
   return "";
 }
@@ -599,20 +1165,32 @@ bool vtkGlobeMapProjection::ComputeShaderParametersDouble(const double origin[2]
   }
   const double a = this->SemiMajorAxis, f = this->Flattening;
   const double mapWidth = pixelSize[0] * width, mapHeight = pixelSize[1] * height;
-  // The reference point: the raster's centre. Polar stereographic needs one away from the
-  // pole (its formulas scale the reference's offset from the pole).
+  // The reference point: the raster's centre. The kinds with an apex need one away from it
+  // (their formulas scale the reference's offset from the apex).
   double xr = origin[0] + 0.5 * mapWidth, yr = origin[1] - 0.5 * mapHeight;
-  const double hemi =
-    (this->Kind == PolarStereographic && this->LatitudeOfTrueScale < 0.0) ? -1.0 : 1.0;
-  if (this->Kind == PolarStereographic)
+  const bool apexKind = this->Kind == PolarStereographic || this->IsConic();
+  const double hemi = this->GetApexHemisphere();
+  double apex[2] = { this->FalseEasting, this->FalseNorthing };
+  if (this->Kind == AlbersEqualArea)
   {
-    const double fx = xr - this->FalseEasting, fy = yr - this->FalseNorthing;
+    apex[1] = MakeConic(this).ApexNorthing(a, f, this->StandardParallel);
+  }
+  else if (this->IsConic() &&
+    !this->ForwardUnchecked(this->CentralMeridian, 90.0 * hemi, apex))
+  {
+    vtkErrorMacro(<< "ComputeShaderParameters: the apex of " << this->GetKindAsString()
+                  << " has no map coordinates.");
+    return false;
+  }
+  if (apexKind)
+  {
+    const double fx = xr - apex[0], fy = yr - apex[1];
     const double rho = std::hypot(fx, fy), half = 0.5 * std::max(mapWidth, mapHeight);
     if (rho < half)
     {
       const double ux = rho > 0.0 ? fx / rho : 1.0, uy = rho > 0.0 ? fy / rho : 0.0;
-      xr = this->FalseEasting + ux * half;
-      yr = this->FalseNorthing + uy * half;
+      xr = apex[0] + ux * half;
+      yr = apex[1] + uy * half;
     }
   }
   double lonLat[2];
@@ -672,9 +1250,12 @@ bool vtkGlobeMapProjection::ComputeShaderParametersDouble(const double origin[2]
       break;
     }
     case PolarStereographic:
+    case LambertConformalConic:
+    case AlbersEqualArea:
+    case LambertAzimuthalEqualArea:
     {
-      // F_r: the reference's offset from the pole in the north-pole frame (y mirrored south).
-      const double fx = xr - this->FalseEasting, fy = hemi * (yr - this->FalseNorthing);
+      // F_r: the reference's offset from the apex in the north-apex frame (y mirrored south).
+      const double fx = xr - apex[0], fy = hemi * (yr - apex[1]);
       m[0] = fx / mapWidth;
       m[1] = -fy / mapWidth;
       m[2] = -hemi * fy / mapHeight;
@@ -682,6 +1263,40 @@ bool vtkGlobeMapProjection::ComputeShaderParametersDouble(const double origin[2]
       const double s = std::sin(latR);
       const double colat = 0.5 * Pi - latR;
       P[20] = std::sin(colat) / (1.0 + std::cos(colat)) * std::exp(e * std::atanh(e * s));
+      // The cone constant n: the meridian convergence per unit of longitude.
+      const double n = (this->Kind == LambertConformalConic || this->Kind == AlbersEqualArea)
+        ? MakeConic(this).ConeConstant(lonLat[1])
+        : 1.0;
+      if (this->Kind != PolarStereographic)
+      {
+        P[21] = n;
+      }
+      if (this->Kind == AlbersEqualArea || this->Kind == LambertAzimuthalEqualArea)
+      {
+        // rho^2 = (a^2 / n^2)(C - n q): u = rho^2 / rho_r^2 - 1 = K (q - q_r) / (1 - e^2).
+        P[20] = -(1.0 - e * e) * a * a / (n * (fx * fx + fy * fy));
+      }
+      if (this->Kind != PolarStereographic)
+      {
+        P[24] = std::remainder(lonR - this->CentralMeridian * Deg, 2.0 * Pi);
+      }
+      if (this->Kind == LambertAzimuthalEqualArea)
+      {
+        // (q_p - q_r) / (1 - e^2), q / (1 - e^2) = sin / (1 - e^2 sin^2) + atanh(e sin) / e.
+        const double sr = std::sin(latR);
+        const auto qOver = [e](double s) {
+          return s / (1.0 - e * e * s * s) + (e > 0.0 ? std::atanh(e * s) / e : s);
+        };
+        P[25] = 1.0 / (qOver(1.0) - qOver(sr));
+      }
+      break;
+    }
+    case CylindricalEqualArea:
+    {
+      // y = a q / (2 k0): dv from (q - q_r) / (1 - e^2).
+      const double k0 = CylindricalEqualAreaScale(f, this->StandardParallel);
+      m[0] = this->GetMapUnitsPerRadianOfLongitude() / mapWidth;
+      m[3] = -a * (1.0 - e * e) / (2.0 * k0) / mapHeight;
       break;
     }
     case TransverseMercator:
@@ -735,6 +1350,7 @@ void vtkGlobeMapProjection::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Flattening: " << this->Flattening << "\n";
   os << indent << "CentralMeridian: " << this->CentralMeridian << "\n";
   os << indent << "StandardParallel: " << this->StandardParallel << "\n";
+  os << indent << "StandardParallel2: " << this->StandardParallel2 << "\n";
   os << indent << "LatitudeOfTrueScale: " << this->LatitudeOfTrueScale << "\n";
   os << indent << "ScaleFactor: " << this->ScaleFactor << "\n";
   os << indent << "LatitudeOfOrigin: " << this->LatitudeOfOrigin << "\n";

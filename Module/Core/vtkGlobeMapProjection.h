@@ -15,13 +15,31 @@
  * - WebMercator: spherical formulas with R = a on the datum's latitude (EPSG:3857).
  * - TransverseMercator: central meridian, ScaleFactor, latitude of origin, false
  *   easting/northing; UTM zones (GeographicLib::TransverseMercator, Krueger's series).
+ * - LambertConformalConic: one standard parallel with ScaleFactor there (EPSG method 9801) or
+ *   two (9802), latitude and longitude of the (false) origin, false easting/northing
+ *   (GeographicLib::LambertConformalConic); e.g. EPSG:2154, 3034.
+ * - AlbersEqualArea: two standard parallels, latitude of the false origin, central meridian,
+ *   false easting/northing (GeographicLib::AlbersEqualArea); e.g. EPSG:5070, 3577.
+ * - LambertAzimuthalEqualArea: polar aspects only (latitude of origin +-90), e.g. EASE-Grid 2.0
+ *   North and South (EPSG:6931, 6932) (GeographicLib::AlbersEqualArea with a standard parallel
+ *   at the pole).
+ * - CylindricalEqualArea: standard parallel, central meridian, false easting/northing; e.g.
+ *   EASE-Grid 2.0 Global (EPSG:6933) (GeographicLib::AlbersEqualArea with standard parallels
+ *   +-phi1).
  *
- * For the cylindrical kinds (Geographic, Equirectangular, Mercator, WebMercator) Forward wraps
- * the longitude into [LongitudeWest, LongitudeWest + 360) before projecting, so both the
- * -180..180 (default) and the 0..360 conventions give the x of their rasters.
+ * For the cylindrical kinds (Geographic, Equirectangular, Mercator, WebMercator,
+ * CylindricalEqualArea) Forward wraps the longitude into [LongitudeWest, LongitudeWest + 360)
+ * before projecting, so both the -180..180 (default) and the 0..360 conventions give the x of
+ * their rasters.
  *
  * SetFromEPSG knows 4326, 4087, 32662, 3413, 3031, 3995, 3976, 3032, 32661, 32761, 3395,
- * 3857 (900913, 3785), 326zz and 327zz (UTM zones 1-60), all on WGS84.
+ * 3857 (900913, 3785), 326zz and 327zz (UTM zones 1-60), all on WGS84, from a table; and any
+ * other code whose definition in PROJ's database uses one of the methods above (transverse
+ * Mercator, polar stereographic A/B, Mercator A/B, Lambert conformal conic 1SP/2SP, Albers,
+ * polar Lambert azimuthal equal-area, Lambert cylindrical equal-area) in metres, provided
+ * that the projection then agrees with PROJ's own transformation from EPSG:4326 within 1 mm
+ * at points of the CRS's area of use: a CRS on a datum that PROJ shifts against WGS 84 (e.g.
+ * OSGB 36, EPSG:27700) is not drawn this way (layers reproject it on load instead).
  *
  * GPU: ComputeShaderParameters turns a raster's georeferencing into the seven vec4 of
  * globe_projection.glsl (computed in double, the big numbers folded in), and
@@ -52,7 +70,11 @@ public:
     PolarStereographic = 2,
     Mercator = 3,
     WebMercator = 4,
-    TransverseMercator = 5
+    TransverseMercator = 5,
+    LambertConformalConic = 6,
+    AlbersEqualArea = 7,
+    LambertAzimuthalEqualArea = 8,
+    CylindricalEqualArea = 9
   };
 
   /// Number of floats ComputeShaderParameters writes (seven vec4).
@@ -63,7 +85,7 @@ public:
 
   ///@{
   /// The kind; the parameters below are kept when it changes.
-  vtkSetClampMacro(Kind, int, Geographic, TransverseMercator);
+  vtkSetClampMacro(Kind, int, Geographic, CylindricalEqualArea);
   vtkGetMacro(Kind, int);
   const char* GetKindAsString();
   ///@}
@@ -102,6 +124,24 @@ public:
     double falseEasting = 0.0, double falseNorthing = 0.0, double latitudeOfOrigin = 0.0);
   /// UTM zone 1..60 (false and an error otherwise), north or south hemisphere.
   bool SetToUTM(int zone, bool north);
+  /**
+   * Two standard parallels (scale 1 on both; equal ones make the one-parallel, tangent cone),
+   * the latitude of the false origin (where y = falseNorthing on the central meridian).
+   */
+  void SetToLambertConformalConic(double standardParallel1, double standardParallel2,
+    double latitudeOfOrigin, double centralMeridian, double falseEasting = 0.0,
+    double falseNorthing = 0.0);
+  /// One standard parallel, which is the latitude of origin, with the scale scaleFactor there.
+  void SetToLambertConformalConic1SP(double latitudeOfOrigin, double centralMeridian,
+    double scaleFactor, double falseEasting = 0.0, double falseNorthing = 0.0);
+  void SetToAlbersEqualArea(double standardParallel1, double standardParallel2,
+    double latitudeOfOrigin, double centralMeridian, double falseEasting = 0.0,
+    double falseNorthing = 0.0);
+  /// Polar aspects: north when latitudeOfOrigin > 0 (it is taken as +-90).
+  void SetToLambertAzimuthalEqualArea(double latitudeOfOrigin, double centralMeridian,
+    double falseEasting = 0.0, double falseNorthing = 0.0);
+  void SetToCylindricalEqualArea(double standardParallel, double centralMeridian,
+    double falseEasting = 0.0, double falseNorthing = 0.0);
   ///@}
 
   ///@{
@@ -109,15 +149,20 @@ public:
   vtkSetMacro(CentralMeridian, double);
   vtkGetMacro(CentralMeridian, double);
   /// Equirectangular and Mercator: the parallel where ScaleFactor holds (Mercator) or whose
-  /// cosine scales x (equirectangular).
+  /// cosine scales x (equirectangular); cylindrical equal-area: where the scale is 1; the
+  /// conics: the first standard parallel.
   vtkSetMacro(StandardParallel, double);
   vtkGetMacro(StandardParallel, double);
+  /// The conics' second standard parallel (equal to the first: one standard parallel).
+  vtkSetMacro(StandardParallel2, double);
+  vtkGetMacro(StandardParallel2, double);
   /// Polar stereographic: the latitude where the scale is ScaleFactor; its sign picks the pole.
   vtkSetMacro(LatitudeOfTrueScale, double);
   vtkGetMacro(LatitudeOfTrueScale, double);
   vtkSetMacro(ScaleFactor, double);
   vtkGetMacro(ScaleFactor, double);
-  /// Transverse Mercator: the latitude where y = FalseNorthing on the central meridian.
+  /// Transverse Mercator and the conics: the latitude where y = FalseNorthing on the central
+  /// meridian; Lambert azimuthal equal-area: the pole (+-90).
   vtkSetMacro(LatitudeOfOrigin, double);
   vtkGetMacro(LatitudeOfOrigin, double);
   vtkSetMacro(FalseEasting, double);
@@ -157,7 +202,9 @@ public:
    * projection is valid and used: the whole globe for Geographic and Equirectangular,
    * +-89.5 (Mercator), +-85.0511 (Web Mercator), its hemisphere (polar stereographic),
    * 10 degrees either side of the central meridian between 89 S and 89 N (transverse
-   * Mercator; UTM: 80 S to 84 N). The GPU functions return (-1, -1) outside it.
+   * Mercator; UTM: 80 S to 84 N), all longitudes and latitudes short of 0.5 degrees of the
+   * pole opposite the apex (the conics and Lambert azimuthal equal-area), the whole globe
+   * (cylindrical equal-area). The GPU functions return (-1, -1) outside it.
    */
   void GetValidDomain(double box[4]);
   /// Whether (lon, lat) in degrees lies in GetValidDomain's region.
@@ -178,14 +225,16 @@ public:
   /**
    * The globe_projection.glsl function that takes these parameters:
    * globe_projectEquirectangular (Geographic too), globe_projectMercator (Web Mercator too),
-   * globe_projectPolarStereographic or globe_projectTransverseMercator.
+   * globe_projectPolarStereographic, globe_projectTransverseMercator,
+   * globe_projectConformalConic, globe_projectAlbersEqualArea (Lambert azimuthal equal-area
+   * too) or globe_projectCylindricalEqualArea.
    */
   const char* GetShaderFunctionName();
 
   /**
    * Map units per radian of longitude along the x axis of a cylindrical projection
    * (Geographic: degrees, Equirectangular: a cos(standard parallel), Mercator: a k0, Web
-   * Mercator: a); 0 for the other kinds, whose x is not proportional to longitude.
+   * Mercator: a, cylindrical equal-area: a k0); 0 for the other kinds, whose x is not proportional to longitude.
    */
   double GetMapUnitsPerRadianOfLongitude();
 
@@ -220,6 +269,7 @@ protected:
   double Flattening = 1.0 / 298.257223563;
   double CentralMeridian = 0.0;
   double StandardParallel = 0.0;
+  double StandardParallel2 = 0.0;
   double LatitudeOfTrueScale = 90.0;
   double ScaleFactor = 1.0;
   double LatitudeOfOrigin = 0.0;
@@ -236,6 +286,10 @@ private:
     double latitudeOfTrueScale, double scaleFactor, double latitudeOfOrigin, double falseEasting,
     double falseNorthing);
   bool SetFromEPSGQuietly(int code);
+  bool SetFromPROJ(int code);
+  // +1 when the conic's apex (or the azimuthal projection's centre) is the north pole.
+  double GetApexHemisphere();
+  bool IsConic();
   bool ForwardUnchecked(double lon, double lat, double xy[2]);
   bool InverseUnchecked(double x, double y, double lonLat[2]);
 };

@@ -646,7 +646,8 @@ bool vtkGlobeLayerSet::PrepareProjection(void* entry)
   {
     return refuse("its map projection EPSG:" + std::to_string(epsg) + " is not supported (" +
       "supported: geographic, equirectangular, polar stereographic, Mercator, Web Mercator, "
-      "transverse Mercator / UTM)");
+      "transverse Mercator / UTM, Lambert conformal conic, Albers, polar Lambert azimuthal "
+      "and cylindrical equal-area)");
   }
   const double a = layer->GetDatumSemiMajorAxis(), b = layer->GetDatumSemiMinorAxis();
   if (a > 0.0 && b > 0.0 && b <= a)

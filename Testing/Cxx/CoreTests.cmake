@@ -26,7 +26,7 @@ target_include_directories(GlobeCoreCxxTests PRIVATE "${OIIO_INCLUDE_DIR}" "${GE
 target_link_libraries(GlobeCoreCxxTests PRIVATE
   GlobeTestSupport VTK::CommonTransforms VTK::FiltersGeneral VTK::FiltersSources VTK::TestingCore
   VTK::ImagingCore VTK::ImagingGeneral
-  "${OIIO_LIBRARY}" "${OIIO_UTIL_LIBRARY}" "${GEOTIFF_LIBRARY}" TIFF::TIFF)
+  "${OIIO_LIBRARY}" "${OIIO_UTIL_LIBRARY}" "${GEOTIFF_LIBRARY}" TIFF::TIFF PROJ::proj)
 target_compile_definitions(GlobeCoreCxxTests PRIVATE
   "VTKGLOBE_TEMP_DIR=\"${CMAKE_CURRENT_BINARY_DIR}/Temporary\"")
 file(MAKE_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}/Temporary")

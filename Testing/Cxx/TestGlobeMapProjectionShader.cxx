@@ -4,7 +4,10 @@
 // Requirement: every texture coordinate within 0.01 source pixel of the double reference, for
 // rasters with 16384 pixels along their longer side (square pixels), over each projection's
 // typical full domain and over insets (16384 px over 1 and 0.1 degree) at the hard places:
-// the date line, +-80 degrees, the poles. Inputs are float-representable longitudes and
+// the date line, +-80 degrees, the poles and the conics' apexes. The conics, Albers, polar
+// Lambert azimuthal and cylindrical equal-area come from EPSG codes through PROJ's database
+// (vtkGlobeMapProjection::SetFromEPSG checks them against PROJ; the reference here is
+// GeographicLib). Inputs are float-representable longitudes and
 // latitudes (lo = 0), and hi + lo pairs; both sides get the same values. The double mirror
 // (exact library transcendentals) checks the formulas themselves (bound 1e-3 px: Krueger's
 // series stops at alpha_2 on the GPU, and alpha_3's share of a difference is ~1e-8 of it).
@@ -19,6 +22,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <map>
 #include <random>
 #include <string>
 #include <vector>
@@ -41,6 +45,14 @@ struct Raster
   bool MapBox = false;
 };
 
+bool IsCylindrical(int kind)
+{
+  return kind == vtkGlobeMapProjection::Geographic ||
+    kind == vtkGlobeMapProjection::Equirectangular || kind == vtkGlobeMapProjection::Mercator ||
+    kind == vtkGlobeMapProjection::WebMercator ||
+    kind == vtkGlobeMapProjection::CylindricalEqualArea;
+}
+
 // The map box of a geographic box: cylindrical kinds are linear in longitude (the box may
 // span 360 degrees); others are sampled along the boundary and inside.
 bool MapBoxOf(vtkGlobeMapProjection* p, const double geo[4], double box[4])
@@ -49,8 +61,7 @@ bool MapBoxOf(vtkGlobeMapProjection* p, const double geo[4], double box[4])
   box[1] = box[3] = -1e300;
   const int kind = p->GetKind();
   double xy[2];
-  if (kind != vtkGlobeMapProjection::PolarStereographic &&
-    kind != vtkGlobeMapProjection::TransverseMercator)
+  if (IsCylindrical(kind))
   {
     double xy2[2];
     if (!p->Forward(geo[0], geo[2], xy) || !p->Forward(0.5 * (geo[0] + geo[1]), geo[3], xy2))
@@ -86,34 +97,37 @@ bool MapBoxOf(vtkGlobeMapProjection* p, const double geo[4], double box[4])
 namespace F = vtkGlobeShaderMath::f;
 namespace D = vtkGlobeShaderMath::d;
 
+// The function the renderer calls: the one vtkGlobeMapProjection names.
+#define GLOBE_PROJECTION_FUNCTIONS(NS)                                                            \
+  {                                                                                              \
+    { "globe_projectEquirectangular", NS::globe_projectEquirectangular },                        \
+      { "globe_projectMercator", NS::globe_projectMercator },                                    \
+      { "globe_projectPolarStereographic", NS::globe_projectPolarStereographic },                \
+      { "globe_projectTransverseMercator", NS::globe_projectTransverseMercator },                \
+      { "globe_projectConformalConic", NS::globe_projectConformalConic },                        \
+      { "globe_projectAlbersEqualArea", NS::globe_projectAlbersEqualArea },                      \
+    {                                                                                            \
+      "globe_projectCylindricalEqualArea", NS::globe_projectCylindricalEqualArea                 \
+    }                                                                                            \
+  }
+
 template <typename Real, typename Vec2, typename Vec4>
-Vec2 Project(int kind, Real lonHi, Real lonLo, Real latHi, Real latLo, const Vec4 p[7],
-  Vec2 (*eq)(Real, Real, Real, Real, Vec4, Vec4, Vec4, Vec4, Vec4, Vec4, Vec4),
-  Vec2 (*me)(Real, Real, Real, Real, Vec4, Vec4, Vec4, Vec4, Vec4, Vec4, Vec4),
-  Vec2 (*ps)(Real, Real, Real, Real, Vec4, Vec4, Vec4, Vec4, Vec4, Vec4, Vec4),
-  Vec2 (*tm)(Real, Real, Real, Real, Vec4, Vec4, Vec4, Vec4, Vec4, Vec4, Vec4))
+using Function = Vec2 (*)(Real, Real, Real, Real, Vec4, Vec4, Vec4, Vec4, Vec4, Vec4, Vec4);
+
+F::vec2 ProjectF(const std::string& name, float lonHi, float lonLo, float latHi, float latLo,
+  const F::vec4 p[7])
 {
-  auto f = kind == vtkGlobeMapProjection::PolarStereographic ? ps
-    : kind == vtkGlobeMapProjection::TransverseMercator      ? tm
-    : (kind == vtkGlobeMapProjection::Mercator || kind == vtkGlobeMapProjection::WebMercator)
-    ? me
-    : eq;
-  return f(lonHi, lonLo, latHi, latLo, p[0], p[1], p[2], p[3], p[4], p[5], p[6]);
+  static const std::map<std::string, Function<float, F::vec2, F::vec4>> functions =
+    GLOBE_PROJECTION_FUNCTIONS(F);
+  return functions.at(name)(lonHi, lonLo, latHi, latLo, p[0], p[1], p[2], p[3], p[4], p[5], p[6]);
 }
 
-F::vec2 ProjectF(int kind, float lonHi, float lonLo, float latHi, float latLo, const F::vec4 p[7])
+D::vec2 ProjectD(const std::string& name, double lonHi, double lonLo, double latHi,
+  double latLo, const D::vec4 p[7])
 {
-  return Project<float, F::vec2, F::vec4>(kind, lonHi, lonLo, latHi, latLo, p,
-    F::globe_projectEquirectangular, F::globe_projectMercator,
-    F::globe_projectPolarStereographic, F::globe_projectTransverseMercator);
-}
-
-D::vec2 ProjectD(
-  int kind, double lonHi, double lonLo, double latHi, double latLo, const D::vec4 p[7])
-{
-  return Project<double, D::vec2, D::vec4>(kind, lonHi, lonLo, latHi, latLo, p,
-    D::globe_projectEquirectangular, D::globe_projectMercator,
-    D::globe_projectPolarStereographic, D::globe_projectTransverseMercator);
+  static const std::map<std::string, Function<double, D::vec2, D::vec4>> functions =
+    GLOBE_PROJECTION_FUNCTIONS(D);
+  return functions.at(name)(lonHi, lonLo, latHi, latLo, p[0], p[1], p[2], p[3], p[4], p[5], p[6]);
 }
 
 // Worst errors over all rasters of one projection family.
@@ -135,6 +149,7 @@ bool RunRaster(const Raster& r, Family& family)
   p->AddObserver(vtkCommand::ErrorEvent, quiet);
   r.Configure(p);
   const int kind = p->GetKind();
+  const std::string function = p->GetShaderFunctionName();
   double box[4];
   if (r.MapBox)
   {
@@ -189,9 +204,7 @@ bool RunRaster(const Raster& r, Family& family)
   };
   // A raster spanning the whole period of a cylindrical projection: its west and east edges
   // are the same meridian, so u = 0 and u = 1 are the same answer there.
-  const bool periodic = kind != vtkGlobeMapProjection::PolarStereographic &&
-    kind != vtkGlobeMapProjection::TransverseMercator && !r.MapBox &&
-    r.Box[1] - r.Box[0] >= 360.0;
+  const bool periodic = IsCylindrical(kind) && !r.MapBox && r.Box[1] - r.Box[0] >= 360.0;
   auto error = [&](double u, double v, double col, double row) {
     double du = std::abs(u * width - col);
     if (periodic)
@@ -211,15 +224,15 @@ bool RunRaster(const Raster& r, Family& family)
     {
       return;
     }
-    const F::vec2 uv = ProjectF(kind, lonHi, 0.0f, latHi, 0.0f, vf);
+    const F::vec2 uv = ProjectF(function, lonHi, 0.0f, latHi, 0.0f, vf);
     wf.Add(error(uv.x, uv.y, col, row), where);
-    const D::vec2 uvd = ProjectD(kind, lonHi, 0.0, latHi, 0.0, vd);
+    const D::vec2 uvd = ProjectD(function, lonHi, 0.0, latHi, 0.0, vd);
     wd.Add(error(uvd.x, uvd.y, col, row), where);
     if (!reference(static_cast<double>(lonHi) + lonLo, static_cast<double>(latHi) + latLo, col, row))
     {
       return;
     }
-    const F::vec2 uvh = ProjectF(kind, lonHi, lonLo, latHi, latLo, vf);
+    const F::vec2 uvh = ProjectF(function, lonHi, lonLo, latHi, latLo, vf);
     wh.Add(error(uvh.x, uvh.y, col, row), where);
     ++samples;
   };
@@ -263,14 +276,23 @@ bool RunRaster(const Raster& r, Family& family)
       }
     }
   }
-  else if (kind == vtkGlobeMapProjection::PolarStereographic &&
-    std::abs(r.Box[0] - p->GetFalseEasting()) < 1.02 * r.Box[2] &&
-    std::abs(r.Box[1] - p->GetFalseNorthing()) < 1.02 * r.Box[3])
+  else
   {
-    const double pole = p->GetLatitudeOfTrueScale() > 0 ? 90.0 : -90.0;
-    for (double lon : { -180.0, -135.0, -45.0, 0.0, 10.0, 179.9 })
+    // The apex (polar stereographic, conics, polar azimuthal) when the raster holds it.
+    for (double pole : { 90.0, -90.0 })
     {
-      measure(lon, pole);
+      double xy[2];
+      if (IsCylindrical(kind) || kind == vtkGlobeMapProjection::TransverseMercator ||
+        !p->ForwardInDomain(p->GetCentralMeridian(), pole, xy) ||
+        std::abs(r.Box[0] - xy[0]) >= 1.02 * r.Box[2] ||
+        std::abs(r.Box[1] - xy[1]) >= 1.02 * r.Box[3])
+      {
+        continue;
+      }
+      for (double lon : { -180.0, -135.0, -45.0, 0.0, 10.0, 179.9 })
+      {
+        measure(lon, pole);
+      }
     }
   }
 
@@ -301,14 +323,16 @@ double PolarRadius(int code, double lat)
   return std::hypot(xy[0] - p->GetFalseEasting(), xy[1] - p->GetFalseNorthing());
 }
 
-// A map box of the given half size around a geographic point on a polar projection.
-Raster PolarInset(const std::string& name, int code, double lon, double lat, double halfSize)
+// A map box of the given half size around a geographic point.
+Raster PolarInset(const std::string& name, int code, double lon, double lat, double halfSize,
+  Setup setup = nullptr)
 {
   vtkNew<vtkGlobeMapProjection> p;
-  p->SetFromEPSG(code);
+  const Setup configure = setup ? setup : EPSG(code);
+  configure(p);
   double xy[2];
   p->Forward(lon, lat, xy);
-  return { name, EPSG(code), { xy[0], xy[1], halfSize, halfSize }, true };
+  return { name, configure, { xy[0], xy[1], halfSize, halfSize }, true };
 }
 
 // Points outside the valid domain come back as (-1, -1).
@@ -320,7 +344,8 @@ bool CheckOutsideDomain()
     double Lon, Lat;
   };
   const Case cases[] = { { 3413, 0.0, -30.0 }, { 3031, 20.0, 10.0 }, { 32631, 30.0, 45.0 },
-    { 32601, 10.0, 0.0 }, { 3395, 0.0, 89.9 }, { 3857, 0.0, -86.0 } };
+    { 32601, 10.0, 0.0 }, { 3395, 0.0, 89.9 }, { 3857, 0.0, -86.0 }, { 2154, 0.0, -89.9 },
+    { 3577, 0.0, 89.9 }, { 6931, 10.0, -89.9 } };
   bool ok = true;
   for (const Case& c : cases)
   {
@@ -334,7 +359,7 @@ bool CheckOutsideDomain()
     {
       v[i] = F::vec4(pf[4 * i], pf[4 * i + 1], pf[4 * i + 2], pf[4 * i + 3]);
     }
-    const F::vec2 uv = ProjectF(p->GetKind(), static_cast<float>(c.Lon * Deg), 0.0f,
+    const F::vec2 uv = ProjectF(p->GetShaderFunctionName(), static_cast<float>(c.Lon * Deg), 0.0f,
       static_cast<float>(c.Lat * Deg), 0.0f, v);
     const bool outside = uv.x == -1.0f && uv.y == -1.0f && !p->IsInValidDomain(c.Lon, c.Lat);
     std::printf("  %-4s EPSG:%d (%g, %g) outside the domain -> (%g, %g)\n", outside ? "ok" : "FAIL",
@@ -412,6 +437,41 @@ int TestGlobeMapProjectionShader(int, char*[])
         { "UTM 1S 0.1 deg at -179.99, 80S", utm(1, false), { -180.04, -179.94, -80.05, -79.95 } },
         { "UTM 60N 0.1 deg at 179.99, 84N", utm(60, true), { 179.94, 180.04, 83.9, 84.0 } },
         { "UTM 31N 0.1 deg on the equator", utm(31, true), { 2.95, 3.05, -0.05, 0.05 } },
+      } },
+    { "Lambert conformal conic",
+      {
+        { "EPSG:2154 France", EPSG(2154), { -5.5, 10.0, 41.0, 51.5 } },
+        { "EPSG:3034 Europe", EPSG(3034), { -10.0, 40.0, 30.0, 70.0 } },
+        { "EPSG:2154 0.1 deg at the origin", EPSG(2154), { 2.95, 3.05, 46.45, 46.55 } },
+        { "LCC -20/-40 S, 1 deg at 179.99, 30S", [](vtkGlobeMapProjection* p) {
+            p->SetToLambertConformalConic(-20.0, -40.0, -30.0, 150.0, 1e6, 1e6);
+          },
+          { 179.5, 180.5, -30.5, -29.5 } },
+        PolarInset("LCC 1SP 60N (k0 0.9998), 111 km around the apex", 0, 0.0, 90.0, 55500.0,
+          [](vtkGlobeMapProjection* p) { p->SetToLambertConformalConic1SP(60.0, 10.0, 0.9998); }),
+        PolarInset("EPSG:3034 1 deg at 80N, 179.99", 3034, 179.99, 80.0, 27800.0),
+      } },
+    { "Albers equal-area",
+      {
+        { "EPSG:5070 CONUS", EPSG(5070), { -125.0, -66.0, 24.0, 50.0 } },
+        { "EPSG:3577 Australia", EPSG(3577), { 112.0, 154.0, -44.0, -10.0 } },
+        { "EPSG:5070 0.1 deg", EPSG(5070), { -96.05, -95.95, 39.95, 40.05 } },
+        PolarInset("EPSG:5070 111 km around the apex", 5070, 0.0, 90.0, 55500.0),
+        PolarInset("EPSG:3577 1 deg at 60S, -179.99", 3577, -179.99, -60.0, 27800.0),
+      } },
+    { "Lambert azimuthal equal-area (polar)",
+      {
+        PolarInset("EPSG:6931 (EASE-Grid 2.0 N) to the equator", 6931, 0.0, 90.0, 9.1e6),
+        PolarInset("EPSG:6932 (EASE-Grid 2.0 S) to 50S", 6932, 0.0, -90.0, 4.5e6),
+        PolarInset("EPSG:6931 11 km around the pole", 6931, 0.0, 90.0, 5550.0),
+        PolarInset("EPSG:6932 1 deg at 70S, -179.99", 6932, -179.99, -70.0, 27800.0),
+      } },
+    { "cylindrical equal-area",
+      {
+        { "EPSG:6933 (EASE-Grid 2.0 global)", EPSG(6933), { -180, 180, -90, 90 } },
+        { "EPSG:6933 0..360 +-85", EPSG(6933, 0.0), { 0, 360, -85, 85 } },
+        { "EPSG:6933 0.1 deg at 179.99, 80N", EPSG(6933, 0.0), { 179.94, 180.04, 79.95, 80.05 } },
+        { "EPSG:6933 1 deg at the south pole", EPSG(6933), { 10.0, 11.0, -90.0, -89.0 } },
       } },
   };
 

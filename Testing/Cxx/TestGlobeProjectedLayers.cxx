@@ -16,6 +16,9 @@
 //  D. Kooima's projection-quality weight: an equirectangular and a polar stereographic layer
 //     averaged by their weights give the exact mixture at 30, 60 and 85 degrees north (weights
 //     0.931, 2/3 and 0 for equirectangular; 1 for the conformal polar projection).
+//  E. The same for the families PROJ's database supplies: cylindrical equal-area (EASE-Grid 2.0
+//     Global) as the base, Lambert conformal conic (Lambert-93), Albers (Conus) and polar
+//     Lambert azimuthal equal-area (EASE-Grid 2.0 South), drawn without reprojection.
 #include "vtkGlobeRenderingTestHelpers.h"
 #include "vtkGlobeTestHelpers.h"
 
@@ -24,6 +27,7 @@
 #include "vtkRegressionTestImage.h"
 
 #include <cstdio>
+#include <vector>
 
 namespace
 {
@@ -232,45 +236,23 @@ void PartPolarCap(int argc, char* argv[], bool& imageOk)
   imageOk = vtkRegressionTestImageThreshold(scene.Window, 0.05) == vtkTesting::PASSED;
 }
 
-void PartSynthetic()
+struct ViewPoint
 {
-  std::printf("C. A synthetic planet through three projections (nearest-filtered texels):\n");
-  vtkGlobeTest::Scene scene;
-  scene.Mapper->LightingOff();
-  // Equirectangular base: 2-degree texels.
-  auto equirect = vtkSmartPointer<vtkGlobeLayer>::New();
-  {
-    std::vector<unsigned char> rgb;
-    for (int j = 0; j < 90; ++j)
-    {
-      for (int i = 0; i < 180; ++i)
-      {
-        const auto c = vtkGlobeTest::TexelColour(0, i, j);
-        rgb.insert(rgb.end(), { c[0], c[1], c[2] });
-      }
-    }
-    equirect->SetColorData(180, 90, 3, rgb.data(), -180, 180, -90, 90);
-    equirect->SetFeatherWidth(0.0);
-    equirect->SetInterpolationToNearest();
-  }
-  // Polar stereographic north (EPSG:3413), 100 km texels over +-1,500 km.
-  auto polar = vtkGlobeTest::ProjectedImage(3413, 30, 30, -1.5e6, 1.5e6, 1.0e5,
-    [](int i, int j) { return vtkGlobeTest::TexelColour(1, i, j); });
-  // UTM 33N, 25 km texels, 500 x 1,000 km from (250 km E, 5,500 km N).
-  auto utm = vtkGlobeTest::ProjectedImage(32633, 20, 40, 250000.0, 6.5e6, 25000.0,
-    [](int i, int j) { return vtkGlobeTest::TexelColour(2, i, j); });
-  scene.Mapper->AddLayer(equirect);
-  scene.Mapper->AddLayer(polar);
-  scene.Mapper->AddLayer(utm);
-  vtkGlobeLayer* layers[3] = { equirect, polar, utm };
+  double Camera[3], Target[3];
+};
 
-  struct ViewPoint
-  {
-    double Camera[3], Target[3];
-  };
-  const ViewPoint views[] = { { { 15.0, 40.0, 3.0e6 }, { 15.0, 53.0, 0.0 } },
-    { { 0.0, 70.0, 2.5e6 }, { 0.0, 86.0, 0.0 } }, { { 170.0, 60.0, 4.0e6 }, { 178.0, 80.0, 0.0 } } };
-  int checked = 0, wrong = 0, perLayer[3] = { 0, 0, 0 };
+// Renders each view of a scene of nearest-filtered layers with distinct texel colours
+// (vtkGlobeTest::TexelColour(layer index, i, j)) and counts the pixels that show another
+// texel than the exact projection (CPU, GeographicLib) puts there: the top layer covering the
+// pixel's ground point, away from texel edges (the mesh and depth put a pixel's point a little
+// off its true ground position).
+int WrongTexels(vtkGlobeTest::Scene& scene, const std::vector<vtkGlobeLayer*>& layers,
+  const std::vector<ViewPoint>& views, int& checked, std::vector<int>& perLayer)
+{
+  const int n = static_cast<int>(layers.size());
+  int wrong = 0;
+  checked = 0;
+  perLayer.assign(n, 0);
   for (const ViewPoint& v : views)
   {
     scene.Look(v.Camera, v.Target, 40.0);
@@ -283,11 +265,9 @@ void PartSynthetic()
       {
         continue;
       }
-      // The top layer covering the point, and its texel; skip points near a texel edge (the
-      // mesh and depth put a pixel's point a little off its true ground position).
       int top = -1, ti = 0, tj = 0;
       bool edge = false;
-      for (int l = 2; l >= 0 && top < 0; --l)
+      for (int l = n - 1; l >= 0 && top < 0; --l)
       {
         double u, vv;
         if (!vtkGlobeTest::LayerUV(layers[l], llh[p][0], llh[p][1], u, vv) || u < 0 || u >= 1 ||
@@ -318,12 +298,108 @@ void PartSynthetic()
       wrong += !same;
     }
   }
+  return wrong;
+}
+
+void PartSynthetic()
+{
+  std::printf("C. A synthetic planet through three projections (nearest-filtered texels):\n");
+  vtkGlobeTest::Scene scene;
+  scene.Mapper->LightingOff();
+  // Equirectangular base: 2-degree texels.
+  auto equirect = vtkSmartPointer<vtkGlobeLayer>::New();
+  {
+    std::vector<unsigned char> rgb;
+    for (int j = 0; j < 90; ++j)
+    {
+      for (int i = 0; i < 180; ++i)
+      {
+        const auto c = vtkGlobeTest::TexelColour(0, i, j);
+        rgb.insert(rgb.end(), { c[0], c[1], c[2] });
+      }
+    }
+    equirect->SetColorData(180, 90, 3, rgb.data(), -180, 180, -90, 90);
+    equirect->SetFeatherWidth(0.0);
+    equirect->SetInterpolationToNearest();
+  }
+  // Polar stereographic north (EPSG:3413), 100 km texels over +-1,500 km.
+  auto polar = vtkGlobeTest::ProjectedImage(3413, 30, 30, -1.5e6, 1.5e6, 1.0e5,
+    [](int i, int j) { return vtkGlobeTest::TexelColour(1, i, j); });
+  // UTM 33N, 25 km texels, 500 x 1,000 km from (250 km E, 5,500 km N).
+  auto utm = vtkGlobeTest::ProjectedImage(32633, 20, 40, 250000.0, 6.5e6, 25000.0,
+    [](int i, int j) { return vtkGlobeTest::TexelColour(2, i, j); });
+  scene.Mapper->AddLayer(equirect);
+  scene.Mapper->AddLayer(polar);
+  scene.Mapper->AddLayer(utm);
+
+  const std::vector<ViewPoint> views = { { { 15.0, 40.0, 3.0e6 }, { 15.0, 53.0, 0.0 } },
+    { { 0.0, 70.0, 2.5e6 }, { 0.0, 86.0, 0.0 } }, { { 170.0, 60.0, 4.0e6 }, { 178.0, 80.0, 0.0 } } };
+  int checked = 0;
+  std::vector<int> perLayer;
+  const int wrong = WrongTexels(scene, { equirect, polar, utm }, views, checked, perLayer);
   char what[200];
   std::snprintf(what, sizeof(what),
     "%d pixels (equirectangular %d, polar %d, UTM %d): %d show another texel than the exact "
     "projection's", checked, perLayer[0], perLayer[1], perLayer[2], wrong);
   Check.Expect(perLayer[0] > 2000 && perLayer[1] > 2000 && perLayer[2] > 2000 && wrong == 0, what);
 }
+// The families PROJ's database defines and the GPU draws exactly (Documentation/projections.md):
+// a cylindrical equal-area base (EASE-Grid 2.0 Global), Lambert-93 over France, Conus Albers,
+// and EASE-Grid 2.0 South (polar Lambert azimuthal equal-area) over Antarctica.
+void PartConicsAndEqualArea()
+{
+  std::printf("E. Lambert conformal conic, Albers, polar Lambert azimuthal and cylindrical "
+              "equal-area (nearest-filtered texels):\n");
+  vtkGlobeTest::Scene scene;
+  scene.Mapper->LightingOff();
+  // EPSG:6933: 36 x 15 square texels from the north-west corner of the whole map (x +-17,367,530
+  // m, y +-7,314,540 m); it wraps east-west. In the Streamed. variant the rasters are files
+  // (a PNG with a world file and a .prj each), which stream; in-memory data are always whole.
+  const double ceaW = 17367530.445161499, ceaH = 7314540.8306386121;
+  auto layer = [](const char* name, int index, int epsg, int w, int h, double west,
+                 double north, double pixel) {
+    const auto colour = [index](int i, int j) { return vtkGlobeTest::TexelColour(index, i, j); };
+    if (!vtkGlobeTest::Streamed())
+    {
+      return vtkGlobeTest::ProjectedImage(epsg, w, h, west, north, pixel, colour);
+    }
+    auto file = vtkSmartPointer<vtkGlobeLayer>::New();
+    file->SetFileName(
+      vtkGlobeTest::WriteWorldFilePNG(std::string(VTKGLOBE_TEMP_DIR) + "/" + name, epsg, w, h, west, north, pixel, colour).c_str());
+    file->SetRoleToColor();
+    file->SetStreamingToOn();
+    return file;
+  };
+  auto cea = layer("cea_6933", 0, 6933, 36, 15, -ceaW, ceaH, 2.0 * ceaW / 36.0);
+  auto lambert93 = layer("lambert93_2154", 1, 2154, 24, 24, 100000.0, 7150000.0, 50000.0);
+  auto albers = layer("conus_albers_5070", 2, 5070, 32, 20, -2400000.0, 3200000.0, 150000.0);
+  auto south = layer("ease2_south_6932", 3, 6932, 30, 30, -3.0e6, 3.0e6, 2.0e5);
+  std::vector<vtkGlobeLayer*> layers = { cea, lambert93, albers, south };
+  for (vtkGlobeLayer* l : layers)
+  {
+    l->SetFeatherWidth(0.0);
+    l->SetInterpolationToNearest();
+    scene.Mapper->AddLayer(l);
+  }
+  const std::vector<ViewPoint> views = { { { 2.0, 38.0, 2.5e6 }, { 2.5, 46.5, 0.0 } },
+    { { -98.0, 25.0, 5.0e6 }, { -98.0, 39.0, 0.0 } }, { { 20.0, -55.0, 4.0e6 }, { 0.0, -80.0, 0.0 } },
+    { { 179.0, 10.0, 8.0e6 }, { 179.0, 20.0, 0.0 } } };
+  int checked = 0;
+  std::vector<int> perLayer;
+  const int wrong = WrongTexels(scene, layers, views, checked, perLayer);
+  char what[240];
+  std::snprintf(what, sizeof(what),
+    "%d pixels (EPSG:6933 %d, 2154 %d, 5070 %d, 6932 %d): %d show another texel than the exact "
+    "projection's; %d active projected layers%s", checked, perLayer[0], perLayer[1], perLayer[2],
+    perLayer[3], wrong, scene.Mapper->GetLayerSet()->GetNumberOfActiveColorLayers(),
+    lambert93->IsStreamed() ? ", streamed" : "");
+  Check.Expect(perLayer[0] > 2000 && perLayer[1] > 2000 && perLayer[2] > 2000 &&
+      perLayer[3] > 2000 && wrong == 0 && lambert93->GetReprojectedFromEPSG() == 0 &&
+      lambert93->IsStreamed() == vtkGlobeTest::Streamed() &&
+      scene.Mapper->GetLayerSet()->GetNumberOfActiveColorLayers() == 4,
+    what);
+}
+
 void PartQualityWeight()
 {
   std::printf("D. Kooima's projection-quality weight (two layers averaged, lighting off):\n");
@@ -386,6 +462,7 @@ int TestGlobeProjectedLayers(int argc, char* argv[])
   bool image = true;
   PartPolarCap(argc, argv, image);
   PartSynthetic();
+  PartConicsAndEqualArea();
   PartQualityWeight();
   return Check.Result() == 0 && image ? 0 : 1;
 }

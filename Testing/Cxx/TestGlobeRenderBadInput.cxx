@@ -1,6 +1,7 @@
 // Bad input to the globe mapper: no layers; missing, corrupt, non-georeferenced rasters,
 // contradictory georeferencing, an extent outside its projection's domain, and a raster of NaN
-// among good ones (one of them UTM, one in EPSG:2154, which is reprojected on load); a camera
+// among good ones (one of them UTM, one in EPSG:3035, oblique Lambert azimuthal equal-area,
+// which is reprojected on load); a camera
 // at the centre of the body, inside
 // it, and at NaN; a viewport without area. Each case: a clear error where it is one, no GL
 // error, no NaN in the depth buffer, no crash, and the rest of the scene still renders.
@@ -35,29 +36,6 @@ public:
   }
   std::vector<std::string> Messages;
 };
-
-// A small PNG with an ESRI world file (north-west pixel centre, pixel size) and a .prj naming
-// an EPSG code: the plainest way a user brings a raster in a projection.
-std::string WritePNG(const std::string& name, double x0, double y0, double pixel, int epsg,
-  const std::string& crsName)
-{
-  const std::string base = std::string(VTKGLOBE_TEMP_DIR) + "/" + name;
-  vtkNew<vtkImageData> image;
-  image->SetDimensions(16, 16, 1);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  std::fill_n(static_cast<unsigned char*>(image->GetScalarPointer()), 16 * 16 * 3, 200);
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputData(image);
-  writer->SetFileName((base + ".png").c_str());
-  writer->Write();
-  std::ofstream(base + ".pgw") << pixel << "\n0\n0\n" << -pixel << "\n" << x0 << "\n" << y0 << "\n";
-  std::ofstream(base + ".prj") << "PROJCS[\"" << crsName << "\",GEOGCS[\"WGS 84\",DATUM[\"WGS_1984\","
-                                 "SPHEROID[\"WGS 84\",6378137,298.257223563]],PRIMEM[\"Greenwich\",0],"
-                                 "UNIT[\"degree\",0.0174532925199433]],UNIT[\"metre\",1],"
-                                 "AUTHORITY[\"EPSG\",\""
-                              << epsg << "\"]]";
-  return base + ".png";
-}
 
 vtkGlobeTest::Checklist Checks;
 
@@ -149,17 +127,22 @@ int TestGlobeRenderBadInput(int, char*[])
       bad.push_back({ layer, what, words });
     };
     {
+      const auto grey = [](int, int) { return std::array<unsigned char, 3>{ 200, 200, 200 }; };
       auto lambert = vtkSmartPointer<vtkGlobeLayer>::New();
       lambert->SetRoleToColor();
       lambert->SetFileName(
-        WritePNG("lambert93", 700000, 6600000, 1000, 2154, "RGF93 / Lambert-93").c_str());
+        vtkGlobeTest::WriteWorldFilePNG(
+          std::string(VTKGLOBE_TEMP_DIR) + "/laea_europe", 3035, 16, 16, 4321000, 3210000, 1000, grey)
+          .c_str());
       // Not bad any more: a CRS the GPU does not project is reprojected on load.
       addLayer(lambert);
       reprojected = lambert;
       auto outside = vtkSmartPointer<vtkGlobeLayer>::New();
       outside->SetRoleToColor();
       outside->SetFileName(
-        WritePNG("utm_far_away", 5.0e7, 9.0e7, 1000, 32610, "WGS 84 / UTM zone 10N").c_str());
+        vtkGlobeTest::WriteWorldFilePNG(
+          std::string(VTKGLOBE_TEMP_DIR) + "/utm_far_away", 32610, 16, 16, 5.0e7, 9.0e7, 1000, grey)
+          .c_str());
       addBad(outside, "an extent outside its projection's domain", { "utm_far_away.png", "EPSG:32610" });
       auto contradictory = vtkGlobeTest::FileLayer("earth/mt_rainier_utm10n.tif", true);
       contradictory->GetFileReader()->SetEPSG(3413);
@@ -205,8 +188,8 @@ int TestGlobeRenderBadInput(int, char*[])
     }
     Expect(scene.Mapper->GetLayerSet()->GetNumberOfActiveHeightLayers() == 2 &&
         scene.Mapper->GetLayerSet()->GetNumberOfActiveColorLayers() == 2 &&
-        reprojected->GetReprojectedFromEPSG() == 2154,
-      "the good layers stay active (2 height, one of them UTM; 2 colour, one of them EPSG:2154 "
+        reprojected->GetReprojectedFromEPSG() == 3035,
+      "the good layers stay active (2 height, one of them UTM; 2 colour, one of them EPSG:3035 "
       "reprojected on load)");
     Expect(vtkGlobeTest::CoveredPixels(depth) > 5000 && NoNaN(depth) && NoGLError(),
       "the globe still renders");

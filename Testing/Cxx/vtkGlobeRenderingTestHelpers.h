@@ -21,6 +21,8 @@
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkPNGWriter.h"
+#include "vtkImageData.h"
 #include "vtkPixelBufferObject.h"
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkPolyDataMapper.h"
@@ -37,6 +39,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <functional>
 #include <string>
 #include <vector>
@@ -126,6 +129,45 @@ inline bool Streamed()
 {
   const char* v = std::getenv("VTKGLOBE_TEST_STREAMING");
   return v && std::string(v) == "1";
+}
+
+/**
+ * A PNG with an ESRI world file (the north-west pixel's centre, pixel size) and a .prj naming
+ * EPSG:`epsg`, the plainest way a user brings a raster in a projection: `w` x `h` square
+ * pixels of `pixel` map units from the north-west outer corner (west, north), coloured by
+ * `colour(i, j)`. `base` is the path without extension; returns the PNG's path.
+ */
+inline std::string WriteWorldFilePNG(const std::string& base, int epsg, int w, int h,
+  double west, double north, double pixel,
+  const std::function<std::array<unsigned char, 3>(int, int)>& colour)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(w, h, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* rgb = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (int j = 0; j < h; ++j)
+  {
+    for (int i = 0; i < w; ++i)
+    {
+      // VTK images run south to north; row j counts from the north.
+      const auto c = colour(i, j);
+      std::copy(c.begin(), c.end(), rgb + 3 * (static_cast<size_t>(h - 1 - j) * w + i));
+    }
+  }
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName((base + ".png").c_str());
+  writer->Write();
+  std::ofstream world(base + ".pgw");
+  world.precision(17);
+  world << pixel << "\n0\n0\n" << -pixel << "\n" << west + 0.5 * pixel << "\n"
+        << north - 0.5 * pixel << "\n";
+  std::ofstream(base + ".prj") << "PROJCS[\"EPSG:" << epsg << "\",GEOGCS[\"WGS 84\","
+                                 "DATUM[\"WGS_1984\",SPHEROID[\"WGS 84\",6378137,298.257223563]],"
+                                 "PRIMEM[\"Greenwich\",0],UNIT[\"degree\",0.0174532925199433]],"
+                                 "UNIT[\"metre\",1],AUTHORITY[\"EPSG\",\""
+                              << epsg << "\"]]";
+  return base + ".png";
 }
 
 /// A layer from a file in the data folder.

@@ -8,13 +8,17 @@
 // (or next to) the raster, and the GPU only computes the DIFFERENCE of the projection from
 // r with formulas that keep relative accuracy for small differences. No planet radius, false
 // northing or absolute northing enters float arithmetic: they are folded into a 2x2 matrix
-// and r's texture coordinates. All four conformal/cylindrical kinds are functions of
+// and r's texture coordinates. The conformal kinds (and equirectangular) are functions of
 // w = psi + i*lambda (psi the isometric latitude):
 //   equirectangular:  (dLon, dLat)                       linear
 //   Mercator:         (dLon, psi - psi_r)                linear in w
 //   polar stereogr.:  F = F_r * (exp(-(w - w_r)) - 1)    complex, F_r folded into the matrix
 //   transverse Merc.: zeta' = gd(w), dzeta' = 2 atan(sinh(dw/2) / cosh(w_r + dw/2)), then
-//                     Krueger's alpha_1, alpha_2 terms (their difference is small).
+//                     Krueger's alpha_1, alpha_2 terms (their difference is small)
+//   Lambert conf. conic: F = F_r * (exp(-n (w - w_r)) - 1)  (n = 1: polar stereographic)
+// and the equal-area kinds are functions of q(lat) (the authalic function) and lambda:
+//   cylindrical:      (dLon, q - q_r)                    linear
+//   Albers, polar Lambert azimuthal: F = F_r * (sqrt(1 + K (q - q_r)) exp(i n dLon) - 1).
 // Inputs are hi + lo pairs (lo may be 0): differences to the reference are taken hi - hi
 // (exact by Sterbenz where it matters) plus lo - lo.
 //
@@ -25,7 +29,10 @@
 //   p3 = (m00, m01, m10, m11): (du, dv) = M (X, Y)
 //   p4 = (central meridian, longitude half width, latitude min, latitude max): the domain
 //   p5, p6: kind-specific (polar: p5.x = t(lat_r); transverse Mercator: p5 = (psi_r,
-//       lon_r - lon0, xi'_r, eta'_r), p6 = (C_r xi, C_r eta, alpha_1, alpha_2)).
+//       lon_r - lon0, xi'_r, eta'_r), p6 = (C_r xi, C_r eta, alpha_1, alpha_2); Lambert
+//       conformal conic: p5 = (t(lat_r), n), p6.x = lon_r - lon0; Albers and Lambert
+//       azimuthal equal-area: p5 = (K, n), K = -(1 - e^2) a^2 / (n rho_r^2), p6 = (lon_r -
+//       lon0, (1 - e^2) / (q_p - q_r) for the azimuthal projection, else 0)).
 // Points outside the domain return (-1, -1): outside every raster.
 //
 // Transcendentals are polynomials here (GLSL leaves sin/exp/log/atan accuracy to the driver;
@@ -68,6 +75,10 @@ float globe_cosh(float x)
 float globe_atan2Rel(float y, float x)
 {
   return atan(y, x);
+}
+float globe_log(float x)
+{
+  return log(x);
 }
 #else
 // sin and cos for |x| <= ~4: Cody-Waite reduction by pi/2 (k * 1.5703125 is exact for the
@@ -255,6 +266,10 @@ float globe_asinh(float z)
 {
   return asinh(z);
 }
+float globe_atanhRatio(float x)
+{
+  return x == 0.0f ? 1.0f : atanh(x) / x;
+}
 #else
 // atanh(s), |s| < 1, relatively accurate for small s (the series below 0.17).
 float globe_atanh(float s)
@@ -280,6 +295,14 @@ float globe_asinh(float z)
     r = globe_log1p(az + az * az / (1.0f + sqrt(1.0f + az * az)));
   }
   return z < 0.0f ? -r : r;
+}
+
+// atanh(x) / x for |x| <= 0.172 (the series of globe_atanhSmall without its factor x).
+float globe_atanhRatio(float x)
+{
+  float s2 = x * x;
+  return 1.0f + s2 * (0.33333333333333333f + s2 * (0.2f + s2 * (0.14285714285714286f +
+    s2 * (0.11111111111111111f + s2 * (0.09090909090909091f + s2 * 0.07692307692307693f)))));
 }
 #endif
 
@@ -323,6 +346,19 @@ float globe_isometricLatitudeDifference(float dSin, float sinLat, float cosLat, 
 {
   float g = globe_asinh(dSin / max(cosLat * cosLatR, 1e-30f));
   return g - e * globe_atanh(e * dSin / (1.0f - e * e * sinLat * sinLatR));
+}
+
+// (q(lat) - q(lat_r)) / (1 - e^2), q the authalic function of the equal-area projections
+// (Snyder 3-12: q / (1 - e^2) = sin / (1 - e^2 sin^2) + atanh(e sin) / e), from dSin =
+// sin lat - sin lat_r, relatively accurate for small differences (both terms are differences
+// written as products: atanh a - atanh b = atanh((a - b) / (1 - a b))). e = 0: 2 dSin.
+float globe_equalAreaDifference(float dSin, float sinLat, float sinLatR, float e)
+{
+  float e2 = e * e;
+  float w = 1.0f - e2 * sinLat * sinLatR;
+  float first = dSin * (1.0f + e2 * sinLat * sinLatR) /
+    ((1.0f - e2 * sinLat * sinLat) * (1.0f - e2 * sinLatR * sinLatR));
+  return first + dSin / w * globe_atanhRatio(e * dSin / w);
 }
 
 // Longitude and latitude differences from the reference point (hi - hi + lo - lo); the
@@ -405,6 +441,22 @@ vec2 globe_projectMercator(float lonHi, float lonLo, float latHi, float latLo, v
   return globe_projectionTexture(dLon, dPsi, p2, p3);
 }
 
+// The projections with an apex (polar stereographic, the conics, polar Lambert azimuthal
+// equal-area) put a point at F = rho e^(i theta) from the apex: rho / rho_r = E and
+// theta - theta_r = dTheta, so its offset from the reference is F_r (E e^(i dTheta) - 1) =
+// F_r (X + iY), X = (E - 1) cos dTheta - 2 sin^2(dTheta / 2), Y = E sin dTheta; F_r (and the
+// hemisphere's mirror) is in the matrix p3.
+vec2 globe_azimuthalOffset(float ratio, float ratioM1, float dTheta, vec4 p2, vec4 p3)
+{
+  float sl = 0.0f;
+  float cl = 0.0f;
+  globe_sinCos(dTheta, sl, cl);
+  float sh = 0.0f;
+  float ch = 0.0f;
+  globe_sinCos(0.5f * dTheta, sh, ch);
+  return globe_projectionTexture(ratioM1 * cl - 2.0f * sh * sh, ratio * sl, p2, p3);
+}
+
 // Polar stereographic, north (p2.w = 1) or south (p2.w = -1, latitudes mirrored). With
 // E = t(lat)/t(lat_r) = exp(-(psi - psi_r)) and dLon = lon - lon_r, the map offset from the
 // reference is F_r (E e^(i dLon) - 1) = F_r (X + iY) with X = (E - 1) cos dLon - 2 sin^2(dLon/2),
@@ -438,13 +490,109 @@ vec2 globe_projectPolarStereographic(float lonHi, float lonLo, float latHi, floa
     ratio = t / p5.x;
     ratioM1 = ratio - 1.0f;
   }
-  float sl = 0.0f;
-  float cl = 0.0f;
-  globe_sinCos(dLon, sl, cl);
-  float sh = 0.0f;
-  float ch = 0.0f;
-  globe_sinCos(0.5f * dLon, sh, ch);
-  return globe_projectionTexture(ratioM1 * cl - 2.0f * sh * sh, ratio * sl, p2, p3);
+  return globe_azimuthalOffset(ratio, ratioM1, dLon, p2, p3);
+}
+
+// The conics' angle from the central meridian stays in [-pi, pi] (the cone is cut opposite the
+// central meridian, and n dLon is not 2 pi periodic for n < 1), but the reference's twin puts
+// dLon in [-pi, pi] around the reference: add or take a turn where the two disagree.
+// lonFromCentral: the reference's longitude from the central meridian (p6.x).
+float globe_conicLongitudeDelta(float dLon, float lonFromCentral)
+{
+  float l = lonFromCentral + dLon;
+  return l > GLOBE_PROJ_PI_HI ? (dLon - 2.0f * GLOBE_PROJ_PI_HI) - 2.0f * GLOBE_PROJ_PI_LO
+    : (l < -GLOBE_PROJ_PI_HI ? (dLon + 2.0f * GLOBE_PROJ_PI_HI) + 2.0f * GLOBE_PROJ_PI_LO
+                             : dLon);
+}
+
+// Lambert conformal conic: the polar stereographic formulas with the cone constant n (p5.y,
+// positive: latitudes are mirrored by p2.w for a southern apex), E = (t / t_r)^n and the angle
+// n dLon.
+vec2 globe_projectConformalConic(float lonHi, float lonLo, float latHi, float latLo, vec4 p0,
+  vec4 p1, vec4 p2, vec4 p3, vec4 p4, vec4 p5, vec4 p6)
+{
+  float e = p2.z;
+  float n = p5.y;
+  float dLon = 0.0f;
+  float dLat = 0.0f;
+  float sinLat = 0.0f;
+  float cosLat = 0.0f;
+  float dSin = 0.0f;
+  if (!globe_conformalStart(lonHi, lonLo, latHi, latLo, p2.w, p0, p1, p4, dLon, dLat, sinLat,
+        cosLat, dSin))
+  {
+    return vec2(-1.0f, -1.0f);
+  }
+  float ratio = 0.0f;
+  float ratioM1 = 0.0f;
+  if (abs(dSin) < 0.25f * cosLat * p1.w)
+  {
+    float dPsi = globe_isometricLatitudeDifference(dSin, sinLat, cosLat, p1.z, p1.w, e);
+    ratioM1 = globe_expm1(-n * dPsi);
+    ratio = 1.0f + ratioM1;
+  }
+  else
+  {
+    float t = cosLat / (1.0f + sinLat) * globe_exp(e * globe_atanh(e * sinLat));
+    ratio = t > 0.0f ? globe_exp(n * globe_log(t / p5.x)) : 0.0f;
+    ratioM1 = ratio - 1.0f;
+  }
+  return globe_azimuthalOffset(ratio, ratioM1, n * globe_conicLongitudeDelta(dLon, p6.x), p2, p3);
+}
+
+// Albers equal-area conic, and Lambert azimuthal equal-area in a polar aspect (n = 1): the
+// radius rho from the apex has rho^2 linear in q, so E = rho / rho_r = sqrt(1 + u) with
+// u = K dq (K = p5.x, folded on the CPU) and E - 1 = u / (sqrt(1 + u) + 1).
+vec2 globe_projectAlbersEqualArea(float lonHi, float lonLo, float latHi, float latLo, vec4 p0,
+  vec4 p1, vec4 p2, vec4 p3, vec4 p4, vec4 p5, vec4 p6)
+{
+  float dLon = 0.0f;
+  float dLat = 0.0f;
+  float sinLat = 0.0f;
+  float cosLat = 0.0f;
+  float dSin = 0.0f;
+  if (!globe_conformalStart(lonHi, lonLo, latHi, latLo, p2.w, p0, p1, p4, dLon, dLat, sinLat,
+        cosLat, dSin))
+  {
+    return vec2(-1.0f, -1.0f);
+  }
+  float u = p5.x * globe_equalAreaDifference(dSin, sinLat, p1.z, p2.z);
+  float root = 0.0f;
+  float ratioM1 = 0.0f;
+  if (p6.y > 0.0f && u < -0.5f)
+  {
+    // Towards the azimuthal projection's centre rho -> 0 and 1 + u cancels: E^2 =
+    // (q_p - q) / (q_p - q_r) with q_p - q from 1 - sin lat = cos^2 / (1 + sin), relatively
+    // accurate up to the pole (p6.y = (1 - e^2) / (q_p - q_r)).
+    float toPole = globe_equalAreaDifference(cosLat * cosLat / (1.0f + sinLat), 1.0f, sinLat, p2.z);
+    root = sqrt(toPole * p6.y);
+    ratioM1 = root - 1.0f;
+  }
+  else
+  {
+    root = sqrt(max(1.0f + u, 0.0f));
+    ratioM1 = u / (root + 1.0f);
+  }
+  float dTheta = p5.y < 1.0f ? p5.y * globe_conicLongitudeDelta(dLon, p6.x) : dLon;
+  return globe_azimuthalOffset(root, ratioM1, dTheta, p2, p3);
+}
+
+// Lambert cylindrical equal-area (EASE-Grid 2.0 Global): linear in (dLon, dq).
+vec2 globe_projectCylindricalEqualArea(float lonHi, float lonLo, float latHi, float latLo,
+  vec4 p0, vec4 p1, vec4 p2, vec4 p3, vec4 p4, vec4 p5, vec4 p6)
+{
+  float dLon = 0.0f;
+  float dLat = 0.0f;
+  float sinLat = 0.0f;
+  float cosLat = 0.0f;
+  float dSin = 0.0f;
+  if (!globe_conformalStart(lonHi, lonLo, latHi, latLo, 1.0f, p0, p1, p4, dLon, dLat, sinLat,
+        cosLat, dSin))
+  {
+    return vec2(-1.0f, -1.0f);
+  }
+  return globe_projectionTexture(
+    dLon, globe_equalAreaDifference(dSin, sinLat, p1.z, p2.z), p2, p3);
 }
 
 // Transverse Mercator (UTM): Krueger's series to alpha_2 on the conformal sphere's
