@@ -2,6 +2,7 @@
 """Plots GlobeBenchmark's JSON: error against frame time per scene, and the Pareto fronts.
 
     plot_benchmark.py BENCHMARK_JSON [--images DIR] [--markdown FILE] [--no-images]
+    plot_benchmark.py --windows JSON... [--images DIR] [--no-images]
 
 Imports only VTK and the standard library. For each scene it writes
 DIR/accuracy-vs-time-<scene>.png (default DIR: Documentation/images): frame time (median, ms)
@@ -13,6 +14,11 @@ wrong-surface pixels in the satellite scene) are drawn on a "fails" row at the t
 The Pareto front (no other configuration is both faster and more accurate) is printed, added to
 the JSON under "pareto", and, with --markdown, the report's generated tables are replaced
 between the markers <!-- BEGIN GENERATED --> and <!-- END GENERATED -->.
+
+--windows takes runs of `GlobeBenchmark --grid-only --window WxH` in several windows and puts
+the automatic grid next to the fixed 512^2 one across them: a markdown table on stdout and
+DIR/automatic-grid-<scene>.png (frame time against error, one line per grid policy through
+the windows).
 """
 
 import argparse
@@ -83,15 +89,54 @@ def name(row):
     return "PGM %s: %s" % (row["family"], row["setting"])
 
 
-def plot_scene(scene, rows, front, path):
+def chart_view(title):
+    """A white 900 x 560 off-screen chart view with a legend; returns (view, chart)."""
     # VTK is imported here so --no-images works without a display.
-    from vtkmodules.vtkChartsCore import vtkAxis, vtkChart, vtkChartXY, vtkPlotPoints
-    from vtkmodules.vtkCommonCore import vtkFloatArray
-    from vtkmodules.vtkCommonDataModel import vtkTable
+    from vtkmodules.vtkChartsCore import vtkChartXY
     from vtkmodules.vtkViewsContext2D import vtkContextView
     import vtkmodules.vtkRenderingContextOpenGL2  # noqa: F401 (the chart's OpenGL backend)
     import vtkmodules.vtkRenderingFreeType  # noqa: F401 (text)
     import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+
+    view = vtkContextView()
+    view.GetRenderer().SetBackground(1, 1, 1)
+    view.GetRenderWindow().SetSize(900, 560)
+    view.GetRenderWindow().SetOffScreenRendering(1)
+    chart = vtkChartXY()
+    view.GetScene().AddItem(chart)
+    chart.SetShowLegend(True)
+    chart.SetTitle(title)
+    return view, chart
+
+
+def add_series(chart, title, points, rgb, marker, line=False):
+    """(x, y) points as markers (and a line through them with line=True)."""
+    from vtkmodules.vtkChartsCore import vtkChart
+    from vtkmodules.vtkCommonCore import vtkFloatArray
+    from vtkmodules.vtkCommonDataModel import vtkTable
+    table = vtkTable()
+    x = vtkFloatArray()
+    x.SetName("frame ms")
+    y = vtkFloatArray()
+    y.SetName(title)
+    table.AddColumn(x)
+    table.AddColumn(y)
+    table.SetNumberOfRows(len(points))
+    for i, (px, py) in enumerate(points):
+        table.SetValue(i, 0, px)
+        table.SetValue(i, 1, py)
+    plot = chart.AddPlot(vtkChart.LINE if line else vtkChart.POINTS)
+    plot.SetInputData(table, 0, 1)
+    plot.SetColor(rgb[0], rgb[1], rgb[2], 255)
+    if line:
+        plot.SetWidth(1.5)
+    if marker:
+        plot.SetMarkerStyle(marker)
+        plot.SetMarkerSize(10)
+
+
+def plot_scene(scene, rows, front, path):
+    from vtkmodules.vtkChartsCore import vtkAxis
 
     errors = [error_of(r) for r in rows if error_of(r) is not None]
     positive = [e for e in errors if e > 0]
@@ -108,38 +153,10 @@ def plot_scene(scene, rows, front, path):
     # Families' curves include the baseline (it is their default value).
     baseline = [r for r in rows if r["family"] == "baseline"]
 
-    view = vtkContextView()
-    view.GetRenderer().SetBackground(1, 1, 1)
-    view.GetRenderWindow().SetSize(900, 560)
-    view.GetRenderWindow().SetOffScreenRendering(1)
-    chart = vtkChartXY()
-    view.GetScene().AddItem(chart)
-    chart.SetShowLegend(True)
+    view, chart = chart_view("%s: terrain error against frame time" % scene["name"])
     # Bottom left: fast and accurate at once is where nothing is.
     chart.GetLegend().SetHorizontalAlignment(chart.GetLegend().LEFT)
     chart.GetLegend().SetVerticalAlignment(chart.GetLegend().BOTTOM)
-    chart.SetTitle("%s: terrain error against frame time" % scene["name"])
-
-    def add_series(title, points, rgb, marker, line=False):
-        table = vtkTable()
-        x = vtkFloatArray()
-        x.SetName("frame ms")
-        y = vtkFloatArray()
-        y.SetName(title)
-        table.AddColumn(x)
-        table.AddColumn(y)
-        table.SetNumberOfRows(len(points))
-        for i, (px, py) in enumerate(points):
-            table.SetValue(i, 0, px)
-            table.SetValue(i, 1, py)
-        plot = chart.AddPlot(vtkChart.LINE if line else vtkChart.POINTS)
-        plot.SetInputData(table, 0, 1)
-        plot.SetColor(rgb[0], rgb[1], rgb[2], 255)
-        if line:
-            plot.SetWidth(1.5)
-        else:
-            plot.SetMarkerStyle(marker)
-            plot.SetMarkerSize(10)
 
     for key in FAMILY_ORDER + ["naive sphere", "naive mesh", "fails"]:
         members = groups.get(key)
@@ -153,10 +170,10 @@ def plot_scene(scene, rows, front, path):
             pts.append((r["frame_ms"]["median"], fails_y if e is None else max(e, floor)))
         pts.sort()
         rgb, marker = STYLE.get(key, ((0, 0, 0), 4))
-        add_series(key if key != "fails" else "fails (uncovered > 5 % or wrong surface)", pts, rgb,
-                   marker)
+        add_series(chart, key if key != "fails" else "fails (uncovered > 5 % or wrong surface)",
+                   pts, rgb, marker)
     if front:
-        add_series("Pareto front",
+        add_series(chart, "Pareto front",
                    [(r["frame_ms"]["median"], max(error_of(r), floor)) for r in front],
                    (0, 0, 0), 0, line=True)
 
@@ -279,18 +296,107 @@ def markdown(data, fronts):
     return "\n".join(out) + "\n"
 
 
+def window_rows(datas):
+    """(scene, window, policy) -> row, policy "fixed" (the baseline, 512^2), "automatic" or
+    "sphere" (VTK's textured sphere), from runs in different windows."""
+    table = {}
+    for data in datas:
+        w, h = data["settings"]["window"]
+        for r in data["rows"]:
+            policy = ("fixed" if r["family"] == "baseline" else
+                      "automatic" if r["setting"].startswith("automatic") else
+                      "sphere" if r["method"] == "sphere" else None)
+            if policy:
+                table[(r["scene"], (w, h), policy)] = r
+    return table
+
+
+def windows_markdown(table):
+    scenes = sorted({k[0] for k in table})
+    windows = sorted({k[1] for k in table}, key=lambda w: w[0] * w[1])
+    out = ["| scene | window | grid | frame ms (median [q1–q3]) | terrain p95 px | ms per Mpx |"
+           " PGM / textured sphere |", "|---|---|---|---|---|---|---|"]
+    for s in scenes:
+        for w in windows:
+            sphere = table.get((s, w, "sphere"))
+            for policy in ("fixed", "automatic"):
+                r = table.get((s, w, policy))
+                if not r:
+                    continue
+                t = r["frame_ms"]
+                ratio = ("%.1f×" % (t["median"] / sphere["frame_ms"]["median"])
+                         if sphere and sphere["frame_ms"]["median"] else "–")
+                out.append("| %s | %d×%d | %s %d² | %.1f [%.1f–%.1f] | %s | %.0f | %s |" % (
+                    s, w[0], w[1], "fixed" if policy == "fixed" else "automatic", r["grid"],
+                    t["median"], t["q1"], t["q3"], fmt(error_of(r), "%.3f"),
+                    t["median"] / (w[0] * w[1] / 1e6), ratio))
+    return "\n".join(out) + "\n"
+
+
+def plot_windows(scene, table, path):
+    from vtkmodules.vtkChartsCore import vtkAxis
+    view, chart = chart_view(
+        "%s: the automatic grid and a fixed 512^2 grid in three windows" % scene)
+    windows = sorted({k[1] for k in table if k[0] == scene}, key=lambda w: w[0] * w[1])
+    every = []
+    for policy, rgb, marker in (("fixed", (0, 0, 0), 5), ("automatic", (31, 119, 180), 4)):
+        pts = [(table[(scene, w, policy)]["frame_ms"]["median"], error_of(table[(scene, w, policy)]))
+               for w in windows
+               if (scene, w, policy) in table and error_of(table[(scene, w, policy)]) is not None]
+        pts = [(t, max(e, 1e-3)) for t, e in pts]
+        every += pts
+        if pts:
+            add_series(chart, "%s grid (%s)" % (policy, ", ".join("%d×%d" % w for w in windows)),
+                       pts, rgb, marker, line=True)
+    bottom = chart.GetAxis(vtkAxis.BOTTOM)
+    bottom.SetTitle("frame time, median (ms); windows from small to large")
+    bottom.SetLogScale(True)
+    left = chart.GetAxis(vtkAxis.LEFT)
+    left.SetTitle("terrain error p95 (px)")
+    left.SetLogScale(True)
+    if every:
+        bottom.SetBehavior(vtkAxis.FIXED)
+        bottom.SetRange(min(t for t, _ in every) / 1.3, max(t for t, _ in every) * 1.3)
+        left.SetBehavior(vtkAxis.FIXED)
+        left.SetRange(min(e for _, e in every) / 1.5, max(e for _, e in every) * 1.5)
+    save(view, path)
+
+
+def windows_main(args):
+    datas = []
+    for path in args.json:
+        with open(path) as f:
+            datas.append(json.load(f))
+    table = window_rows(datas)
+    sys.stdout.write(windows_markdown(table))
+    if not args.no_images:
+        os.makedirs(args.images, exist_ok=True)
+        for scene in sorted({k[0] for k in table}):
+            path = os.path.join(args.images, "automatic-grid-%s.png" % scene)
+            plot_windows(scene, table, path)
+            print("wrote %s" % path)
+    return 0
+
+
 BEGIN = "<!-- BEGIN GENERATED (Utilities/plot_benchmark.py) -->"
 END = "<!-- END GENERATED -->"
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("json")
+    parser.add_argument("json", nargs="+")
     here = os.path.dirname(os.path.abspath(__file__))
     parser.add_argument("--images", default=os.path.join(here, "..", "Documentation", "images"))
     parser.add_argument("--markdown", help="replace the generated part of this file")
     parser.add_argument("--no-images", action="store_true")
+    parser.add_argument("--windows", action="store_true",
+                        help="compare the automatic and fixed grids across --grid-only runs")
     args = parser.parse_args()
+    if args.windows:
+        return windows_main(args)
+    if len(args.json) != 1:
+        parser.error("one JSON file (several only with --windows)")
+    args.json = args.json[0]
 
     with open(args.json) as f:
         data = json.load(f)

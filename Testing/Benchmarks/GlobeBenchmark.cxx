@@ -7,7 +7,7 @@
 // `bash Utilities/globe.sh bench` runs both.
 //
 //   GlobeBenchmark [--quick] [--frames N] [--json PATH] [--scene NAME]... [--window WxH]
-//                  [--effects-only] [--no-matrix] [--conditions TEXT] [--help]
+//                  [--effects-only] [--grid-only] [--no-matrix] [--conditions TEXT] [--help]
 //
 // Scenes (window 800 x 600 unless --window; one window, renderer and globe for everything):
 //   earth      the whole Earth from 22,000 km;
@@ -19,7 +19,7 @@
 // Settings, in families (each a list of setters applied to the defaults; see Settings()):
 //   baseline     the mapper's defaults: grid 512^2, Default depth with the vtkGlobeClippingRange
 //                policy, lighting only, layers as loaded (linear, feather 8, no projection weight);
-//   grid         grid 128^2 .. 1024^2;
+//   grid         grid 128^2 .. 1024^2, and the mapper's automatic grid (1.6 px per cell);
 //   grid-window  grid = 1/2, 1, 2 x the window's larger side;
 //   depth        Default / Logarithmic (vtkGlobeDepthPass) x VTK's plain clipping / the policy;
 //   precision    float geodetic coordinates (vtkGlobeMapper::HighPrecisionGeodeticOff) against
@@ -162,6 +162,7 @@ struct Options
 {
   bool Quick = false;
   bool EffectsOnly = false;
+  bool GridOnly = false;
   bool Matrix = true;
   int Frames = 30;
   int Warmup = 5;
@@ -810,6 +811,12 @@ std::vector<Setting> Benchmark::Settings()
   {
     list.push_back({ "grid", std::to_string(grid) + "^2", [m, grid] { m->SetGridResolution(grid); } });
   }
+  // The mapper's own default: the grid follows the window (Documentation/accuracy-vs-time.md,
+  // "Defaults chosen from it"); the baseline keeps 512^2 so that its tables stay comparable.
+  if (!this->Opt.EffectsOnly)
+  {
+    list.push_back({ "grid", "automatic (1.6 px per cell)", [m] { m->SetGridPixelsPerCell(1.6); } });
+  }
   const int side = std::max(this->Opt.Window.X, this->Opt.Window.Y);
   for (double f : this->Opt.GridFactors)
   {
@@ -835,7 +842,7 @@ std::vector<Setting> Benchmark::Settings()
   }
   // The float path the hi/lo geodetic coordinates replaced (Documentation/rendering.md
   // "Geodetic precision"): what the precision costs and buys.
-  if (!this->Opt.EffectsOnly)
+  if (!this->Opt.EffectsOnly && !this->Opt.GridOnly)
   {
     list.push_back({ "precision", "float geodetic", [m] { m->SetHighPrecisionGeodetic(false); } });
   }
@@ -1597,10 +1604,11 @@ void Benchmark::RunScene(SceneDef& scene)
     row.Family = setting.Family;
     row.Setting = setting.Name;
     row.Method = "pgm";
-    row.Grid = this->Scene.Mapper->GetGridResolution();
-    row.Triangles = 2.0 * (row.Grid - 1) * (row.Grid - 1);
     row.Time = this->Time(scene.Name + " " + setting.Family + " " + setting.Name, scene.A, scene.B,
       this->Scene.Mapper, true);
+    // After the frames: an automatic grid's size is the last frame's.
+    row.Grid = this->Scene.Mapper->GetGridResolution();
+    row.Triangles = 2.0 * (row.Grid - 1) * (row.Grid - 1);
     this->MeasureMemory(row, true);
     row.Error = this->Measure(scene, setting.Registration);
     if (!setting.Registration && baseline)
@@ -2050,7 +2058,7 @@ void Usage(const char* program)
 {
   std::printf(
     "usage: %s [--quick] [--frames N] [--json PATH] [--scene NAME]... [--window WxH]\n"
-    "          [--effects-only] [--no-matrix] [--conditions TEXT] [--help]\n"
+    "          [--effects-only] [--grid-only] [--no-matrix] [--conditions TEXT] [--help]\n"
     "  Sweeps the PGM globe's settings (grid, grid relative to the window, depth mode and\n"
     "  clipping, composition, effects) on the scenes earth, rainier, everest and satellite, with\n"
     "  VTK's naive globes (a textured sphere, warped lon/lat meshes) on the same scenes; frame\n"
@@ -2058,6 +2066,8 @@ void Usage(const char* program)
     "  memory. Then the whole-Earth grid x window matrix (Mahsman's Tables 6.2-6.4 layout).\n"
     "  --quick         fewer settings, frames and samples, a smaller window (a smoke run)\n"
     "  --effects-only  only the baseline and the effects, at the whole Earth, 1024x768\n"
+    "  --grid-only     only the baseline (grid 512^2), the automatic grid and the textured\n"
+    "                  sphere, without the matrix (with --window: the automatic grid's rows)\n"
     "  --scene NAME    only this scene (repeatable)\n"
     "  --window WxH    the scenes' window (default 800x600)\n"
     "  --no-matrix     skip the grid x window matrix\n"
@@ -2084,6 +2094,10 @@ int main(int argc, char* argv[])
     else if (arg == "--effects-only")
     {
       options.EffectsOnly = true;
+    }
+    else if (arg == "--grid-only")
+    {
+      options.GridOnly = true;
     }
     else if (arg == "--no-matrix")
     {
@@ -2135,6 +2149,16 @@ int main(int argc, char* argv[])
     options.Meshes = { { 256, 128 } };
     options.MatrixGrids = { 256 };
     options.MatrixWindows = { { 256, 256 } };
+  }
+  if (options.GridOnly)
+  {
+    options.Grids.clear();
+    options.GridFactors.clear();
+    options.Effects.clear();
+    options.Depth.clear();
+    options.Compositions.clear();
+    options.Meshes.clear();
+    options.Matrix = false;
   }
   if (options.EffectsOnly)
   {
