@@ -1,24 +1,40 @@
 // GlobeEarth: the main demo. Renders the Earth from the data in Data/ (a 2-degree global
-// relief, SRTM insets of Mount Rainier and Mount Everest, Blue Marble imagery) with the
-// Projective Grid Mapping globe mapper.
+// relief, SRTM insets of Mount Rainier and Mount Everest, Blue Marble imagery) and the Moon
+// with the Projective Grid Mapping globe mapper, as a gallery of five pictures:
+//   earth       the whole Earth with its atmosphere (limb glow, sunlit sea glint);
+//   rainier     Mount Rainier from 3 km, under a sky, its relief tinted by height;
+//   everest     Everest rising from behind the horizon, 200 km away, through the haze;
+//   moon        the Moon on its own 1,737.4 km sphere, lit from the side;
+//   companions  the Earth with a satellite on a drawn orbit: ordinary VTK actors in front of
+//               and behind the globe, sharing its depth buffer.
 //
-//   GlobeEarth [--data DIR] [--out DIR] [--view earth|rainier|everest|all] [--size WxH]
-//              [--grid N] [--interactive]
+//   GlobeEarth [--data DIR] [--out DIR] [--view NAME|all] [--size WxH] [--grid N]
+//              [--interactive]
 //
-// Without --interactive it renders each viewpoint offscreen and writes PNG files (no display
-// needed); with it, it opens a window navigated by vtkGlobeInteractorStyle (drag the ground,
-// wheel to zoom toward the cursor, Ctrl+drag to tilt and turn; n north up, u look down, r the
-// whole Earth; 1/2/3 for the viewpoints, q to quit).
+// Without --interactive it renders each viewpoint offscreen and writes globe-NAME.png files (no
+// display needed); with it, it opens a window navigated by vtkGlobeInteractorStyle (drag the
+// ground, wheel to zoom toward the cursor, Ctrl+drag to tilt and turn; n north up, u look down,
+// r the whole Earth; 1/2/3 for the Earth's viewpoints, q to quit). The grid follows the window
+// (the mapper's default) unless --grid fixes it.
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkGlobeCompositePass.h"
 #include "vtkGlobeEllipsoid.h"
 #include "vtkGlobeInteractorStyle.h"
 #include "vtkGlobeLayer.h"
 #include "vtkGlobeMapper.h"
+#include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkSphereSource.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
@@ -49,16 +65,57 @@ struct Viewpoint
   double Near, Far;
   // The sun seen from the target: azimuth (deg from north, clockwise) and elevation (deg).
   double SunAzimuth, SunElevation;
+  // What the scene calls for: the atmosphere (sky, haze, limb), a hypsometric tint of this
+  // opacity over the imagery (0: none) with snow above SnowLine (m), the Moon instead of the
+  // Earth, the satellite.
+  bool Atmosphere;
+  double Tint, SnowLine;
+  bool Moon;
+  bool Companions;
 };
 
 const Viewpoint Viewpoints[] = {
-  { "earth", "the whole Earth (Mahsman's TC1)", { -40.0, 25.0, 2.2e7 }, { -40.0, 25.0, 0.0 }, 30.0,
-    0, 0, 120.0, 60.0 },
-  { "rainier", "Mount Rainier from 20 km (Mahsman's TC2)", { -121.86, 46.75, 16000.0 },
-    { -121.7603, 46.8523, 4392.0 }, 40.0, 100.0, 1.0e6, 150.0, 35.0 },
-  { "everest", "Everest rising from behind the horizon, 200 km away, from 1,000 m",
-    { 85.2, 26.6, 1000.0 }, { 86.925, 27.9881, 6000.0 }, 12.0, 100.0, 1.0e6, 200.0, 30.0 },
+  { "earth", "the whole Earth with its atmosphere (Mahsman's TC1)", { -40.0, 25.0, 2.2e7 },
+    { -40.0, 25.0, 0.0 }, 30.0, 0, 0, 120.0, 40.0, true, 0.0, 0.0, false, false },
+  { "rainier", "Mount Rainier from 3 km under a sky, relief tinted by height",
+    { -121.97, 46.70, 3000.0 }, { -121.7603, 46.8523, 3600.0 }, 45.0, 10.0, 1.0e6, 150.0, 35.0,
+    true, 0.55, 3300.0, false, false },
+  { "everest", "Everest on the horizon, 60 km away, from 4,000 m, through the haze, tinted",
+    { 86.55, 27.55, 4000.0 }, { 86.925, 27.9881, 7500.0 }, 30.0, 10.0, 1.0e6, 240.0, 20.0, true,
+    0.5, 5500.0, false, false },
+  { "moon", "the Moon on its 1,737.4 km sphere", { 20.0, 10.0, 4.6e6 }, { 20.0, 10.0, 0.0 },
+    30.0, 0, 0, 270.0, 45.0, false, 0.0, 0.0, true, false },
+  { "companions", "the Earth with a satellite on its orbit (VTK actors sharing the depth)",
+    { -3.2, 58.2, 1.76e7 }, { -3.2, 58.2, 0.0 }, 36.0, 0, 0, 200.0, 40.0, true, 0.0, 0.0, false,
+    true },
 };
+
+// The orbit of the companions view: a circle 3,000 km up, inclined 51.6 degrees, its ascending
+// node at 30 W, seen from 20 degrees above its plane (the camera's (-3.2, 58.2)), so that it
+// passes in front of the Earth and behind it; the satellite is on it, 80 degrees from the node.
+void OrbitPoint(double anomalyDeg, double radius, double p[3])
+{
+  const double deg = 3.14159265358979 / 180.0;
+  const double u = anomalyDeg * deg, i = 51.6 * deg, node = -30.0 * deg;
+  p[0] = radius * (std::cos(u) * std::cos(node) - std::sin(u) * std::cos(i) * std::sin(node));
+  p[1] = radius * (std::cos(u) * std::sin(node) + std::sin(u) * std::cos(i) * std::cos(node));
+  p[2] = radius * std::sin(u) * std::sin(i);
+}
+
+// An atlas tint for land and sea floor (metres), as in Examples/Python/relief_map.py, with
+// rock below the snow line and snow above it.
+void FillTint(vtkColorTransferFunction* tint, double snowLine)
+{
+  tint->RemoveAllPoints();
+  const double stops[][4] = { { -6000, 0.05, 0.15, 0.45 }, { -150, 0.45, 0.70, 0.90 },
+    { 0, 0.12, 0.42, 0.20 }, { 500, 0.45, 0.62, 0.30 }, { 1500, 0.85, 0.78, 0.45 },
+    { snowLine - 1200, 0.62, 0.42, 0.25 }, { snowLine - 300, 0.58, 0.52, 0.48 },
+    { snowLine, 0.95, 0.95, 0.95 }, { 9000, 1.0, 1.0, 1.0 } };
+  for (const auto& stop : stops)
+  {
+    tint->AddRGBPoint(stop[0], stop[1], stop[2], stop[3]);
+  }
+}
 
 /// A directional sun for the viewpoint, placed from its azimuth and elevation at the target.
 void PlaceSun(vtkLight* sun, vtkGlobeEllipsoid* body, const Viewpoint& v)
@@ -125,7 +182,7 @@ vtkGlobeLayer* AddLayer(vtkGlobeMapper* mapper, const std::string& file, bool he
 int main(int argc, char* argv[])
 {
   std::string data = VTKGLOBE_DATA_DIR, out = ".", view = "all";
-  int width = 800, height = 600, grid = 512;
+  int width = 800, height = 600, grid = 0;
   bool interactive = false;
   for (int i = 1; i < argc; ++i)
   {
@@ -157,8 +214,9 @@ int main(int argc, char* argv[])
     }
     else
     {
-      std::printf("usage: %s [--data DIR] [--out DIR] [--view earth|rainier|everest|all] "
-                  "[--size WxH] [--grid N] [--interactive]\n",
+      std::printf("usage: %s [--data DIR] [--out DIR] "
+                  "[--view earth|rainier|everest|moon|companions|all] [--size WxH] [--grid N] "
+                  "[--interactive]\n",
         argv[0]);
       return arg == "--help" || arg == "-h" ? 0 : 2;
     }
@@ -167,16 +225,75 @@ int main(int argc, char* argv[])
   vtkNew<vtkGlobeEllipsoid> wgs84;
   vtkNew<vtkGlobeMapper> mapper;
   mapper->SetEllipsoid(wgs84);
-  mapper->SetGridResolution(grid);
+  if (grid > 0)
+  {
+    mapper->SetGridResolution(grid);
+  }
   AddLayer(mapper, data + "/earth/relief_2deg.tif", true);
   AddLayer(mapper, data + "/earth/mt_rainier_90m.tif", true);
   AddLayer(mapper, data + "/earth/mt_everest_90m.tif", true);
   AddLayer(mapper, data + "/earth/world.tif", false);
+  mapper->SpecularWaterOn();
+  vtkNew<vtkColorTransferFunction> tint;
 
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
+
+  // The Moon: its own body and mapper, shown in its own view.
+  vtkNew<vtkGlobeEllipsoid> moonBody;
+  moonBody->SetToMoon();
+  vtkNew<vtkGlobeMapper> moonMapper;
+  moonMapper->SetEllipsoid(moonBody);
+  if (grid > 0)
+  {
+    moonMapper->SetGridResolution(grid);
+  }
+  AddLayer(moonMapper, data + "/moon/moon_1024x512.tif", false);
+  vtkNew<vtkActor> moon;
+  moon->SetMapper(moonMapper);
+  moon->VisibilityOff();
+  renderer->AddActor(moon);
+
+  // The companions: the orbit as a polyline and the satellite as a sphere, plain VTK actors.
+  vtkNew<vtkPoints> orbitPoints;
+  vtkNew<vtkCellArray> orbitLine;
+  const int samples = 720;
+  orbitLine->InsertNextCell(samples + 1);
+  for (int k = 0; k <= samples; ++k)
+  {
+    double p[3];
+    OrbitPoint(360.0 * k / samples, 6378137.0 + 3.0e6, p);
+    orbitLine->InsertCellPoint(k < samples ? orbitPoints->InsertNextPoint(p) : 0);
+  }
+  vtkNew<vtkPolyData> orbitData;
+  orbitData->SetPoints(orbitPoints);
+  orbitData->SetLines(orbitLine);
+  vtkNew<vtkPolyDataMapper> orbitMapper;
+  orbitMapper->SetInputData(orbitData);
+  vtkNew<vtkActor> orbit;
+  orbit->SetMapper(orbitMapper);
+  orbit->GetProperty()->SetColor(1.0, 0.8, 0.2);
+  orbit->GetProperty()->SetLineWidth(3.0);
+  orbit->GetProperty()->LightingOff();
+  vtkNew<vtkSphereSource> satelliteShape;
+  double satellitePosition[3];
+  OrbitPoint(80.0, 6378137.0 + 3.0e6, satellitePosition);
+  satelliteShape->SetCenter(satellitePosition);
+  satelliteShape->SetRadius(4.0e5);
+  satelliteShape->SetThetaResolution(32);
+  satelliteShape->SetPhiResolution(16);
+  vtkNew<vtkPolyDataMapper> satelliteMapper;
+  satelliteMapper->SetInputConnection(satelliteShape->GetOutputPort());
+  vtkNew<vtkActor> satellite;
+  satellite->SetMapper(satelliteMapper);
+  satellite->GetProperty()->SetColor(0.9, 0.9, 0.95);
+  for (vtkActor* a : { orbit.Get(), satellite.Get() })
+  {
+    a->VisibilityOff();
+    renderer->AddActor(a);
+  }
   vtkNew<vtkLight> sun;
   sun->SetLightTypeToSceneLight();
   sun->SetPositional(false);
@@ -230,25 +347,55 @@ int main(int argc, char* argv[])
     {
       continue;
     }
-    PlaceCamera(renderer, wgs84, v);
-    PlaceSun(sun, wgs84, v);
+    vtkGlobeEllipsoid* body = v.Moon ? moonBody.Get() : wgs84.Get();
+    actor->SetVisibility(!v.Moon);
+    moon->SetVisibility(v.Moon);
+    orbit->SetVisibility(v.Companions);
+    satellite->SetVisibility(v.Companions);
+    mapper->SetAtmosphere(v.Atmosphere);
+    FillTint(tint, v.SnowLine);
+    mapper->GetCompositePass()->SetHeightColors(v.Tint > 0.0 ? tint.Get() : nullptr);
+    mapper->GetCompositePass()->SetHeightColorOpacity(v.Tint);
+    PlaceCamera(renderer, body, v);
+    PlaceSun(sun, body, v);
     // Two frames: the second uses the first one's lowest visible terrain (GPU reduction).
     window->Render();
     window->Render();
     vtkNew<vtkWindowToImageFilter> grab;
     grab->SetInput(window);
     grab->ReadFrontBufferOff();
+    grab->Update();
     vtkNew<vtkPNGWriter> writer;
     const std::string file = out + "/globe-" + v.Name + ".png";
     writer->SetFileName(file.c_str());
     writer->SetInputConnection(grab->GetOutputPort());
     writer->Write();
-    std::printf("wrote %s: %s (grid %d^2, %dx%d)\n", file.c_str(), v.Description, grid, width, height);
+    // A picture that is nearly all background means something failed to draw: say so.
+    vtkImageData* picture = grab->GetOutput();
+    const vtkIdType pixels = picture->GetNumberOfPoints();
+    vtkIdType drawn = 0;
+    for (vtkIdType i = 0; i < pixels; ++i)
+    {
+      const auto* rgb = static_cast<unsigned char*>(picture->GetScalarPointer()) +
+        i * picture->GetNumberOfScalarComponents();
+      drawn += (rgb[0] > 12 || rgb[1] > 12 || rgb[2] > 12) ? 1 : 0;
+    }
+    if (writer->GetErrorCode() != 0 || drawn < pixels / 10)
+    {
+      std::fprintf(stderr, "error: %s: %s (%lld of %lld pixels drawn)\n", file.c_str(),
+        writer->GetErrorCode() != 0 ? "could not be written" : "the picture is nearly empty",
+        static_cast<long long>(drawn), static_cast<long long>(pixels));
+      return 1;
+    }
+    vtkGlobeMapper* shown = v.Moon ? moonMapper.Get() : mapper.Get();
+    std::printf("wrote %s: %s (grid %d^2, %dx%d)\n", file.c_str(), v.Description,
+      shown->GetGridResolution(), width, height);
     ++written;
   }
   if (written == 0)
   {
-    std::fprintf(stderr, "Unknown view '%s' (earth, rainier, everest or all).\n", view.c_str());
+    std::fprintf(stderr, "Unknown view '%s' (earth, rainier, everest, moon, companions or all).\n",
+      view.c_str());
     return 2;
   }
   return 0;
