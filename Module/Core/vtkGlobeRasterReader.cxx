@@ -1718,6 +1718,9 @@ int vtkGlobeRasterReader::RequestInformation(
   const double origin[3] = { t[0] + 0.5 * t[1], t[3] + in.Height * t[5] - 0.5 * t[5], 0.0 };
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  // RequestData reads any UPDATE_EXTENT (rows of the file only): the executive may split the
+  // raster into pieces, one per MPI rank in pvbatch (Documentation/pipelines.md).
+  outInfo->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 1);
   outInfo->Set(vtkDataObject::SPACING(), spacing, 3);
   outInfo->Set(vtkDataObject::ORIGIN(), origin, 3);
   vtkDataObject::SetPointDataActiveScalarInfo(outInfo, in.ScalarType, in.Channels);

@@ -568,6 +568,46 @@ int TestGlobeRasterReader(int, char*[])
           vtkErrorCode::GetStringFromErrorCode(reader->GetErrorCode()) + ", no points");
     }
 
+    {
+      // Pieces (what each MPI rank of pvbatch asks for): the executive splits the raster by
+      // extent; each piece holds exactly the whole read's values there, the pieces cover it.
+      vtkNew<vtkGlobeRasterReader> whole;
+      whole->SetFileName((Data + "/earth/relief_2deg.tif").c_str());
+      whole->Update();
+      vtkImageData* all = whole->GetOutput();
+      int covered = 0, differ = 0, empty = 0, shared = 0;
+      std::vector<int> seen(180 * 90, 0);
+      std::string extents;
+      for (int piece = 0; piece < 3; ++piece)
+      {
+        vtkNew<vtkGlobeRasterReader> part;
+        part->SetFileName((Data + "/earth/relief_2deg.tif").c_str());
+        part->UpdatePiece(piece, 3, 0);
+        vtkImageData* out = part->GetOutput();
+        int e[6];
+        out->GetExtent(e);
+        extents += Printf(" %d..%d x %d..%d", e[0], e[1], e[2], e[3]);
+        empty += out->GetNumberOfPoints() == 0 ? 1 : 0;
+        for (int j = e[2]; j <= e[3] && out->GetNumberOfPoints() > 0; ++j)
+        {
+          for (int i = e[0]; i <= e[1]; ++i)
+          {
+            const double ours = out->GetScalarComponentAsDouble(i, j, 0, 0);
+            differ += ours != all->GetScalarComponentAsDouble(i, j, 0, 0) ? 1 : 0;
+            shared += seen[j * 180 + i]++ > 0 ? 1 : 0;
+          }
+        }
+      }
+      for (int v : seen)
+      {
+        covered += v > 0 ? 1 : 0;
+      }
+      Expect(empty == 0 && differ == 0 && covered == 180 * 90,
+        Printf("relief_2deg.tif as 3 pieces (%s): none empty, %d points differ from the whole "
+               "read, %d of 16,200 covered (%d shared by neighbouring pieces)",
+          extents.c_str(), differ, covered, shared));
+    }
+
     vtkNew<vtkGlobeRasterReader> reader;
     vtkNew<vtkTest::ErrorObserver> errors;
     reader->AddObserver(vtkCommand::ErrorEvent, errors);

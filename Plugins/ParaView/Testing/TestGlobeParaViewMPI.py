@@ -2,15 +2,16 @@
 script.
 
 - There are 2 ranks (run without mpirun, the test fails).
-- Each rank's piece of relief_2deg.tif lies inside the whole extent and holds, at every point,
-  the value ParaView's GDAL reader (vtkGDALRasterReader, read on that rank) has there.
+- Each rank reads its own piece of relief_2deg.tif (the reader announces
+  CAN_PRODUCE_SUB_EXTENT, so the executive splits the raster by extent): no piece is empty, each
+  lies inside the whole extent and holds, at every point, the value ParaView's GDAL reader
+  (vtkGDALRasterReader, read on that rank) has there.
 - The ranks' pieces together cover the whole raster.
-- The data information ParaView gathers to rank 0 equals the one-process numbers of
-  TestGlobeParaViewReader: extent 0..179 x 0..89, 16,200 points, range -6526.54 .. 5211.51.
-
-How the raster is split is printed, not asserted: today rank 0 reads it all and rank 1 gets an
-empty piece (vtkGlobeRasterReader does not announce CAN_PRODUCE_SUB_EXTENT, so the executive
-asks only piece 0 for data); a reader that reads sub-extents passes the same checks.
+- ParaView's data information on each rank describes that rank's piece (pvbatch --symmetric
+  gathers nothing: each process is its own client); reduced over the ranks (MPI), the extents
+  and value ranges give TestGlobeParaViewReader's one-process numbers: extent 0..179 x 0..89,
+  range -6526.54 .. 5211.51, and the points add up to 16,200 plus the boundary column the two
+  pieces share.
 """
 import os
 
@@ -53,10 +54,11 @@ if piece.GetNumberOfPoints() > 0 and values is not None:
             compared += 1
             ours = values.GetValue((j - extent[2]) * width + (i - extent[0]))
             differ += ours != ref.GetValue(j * 180 + i)
-expect(piece.GetNumberOfPoints() == 0 or (inside and compared == piece.GetNumberOfPoints()
-                                          and differ == 0),
+expect(piece.GetNumberOfPoints() > 0 and inside and compared == piece.GetNumberOfPoints()
+       and differ == 0,
        "piece extent %s, %d points, %d compared with GDAL's, %d differ"
        % (extent, piece.GetNumberOfPoints(), compared, differ))
+points = comm.allreduce(piece.GetNumberOfPoints())
 
 # Together the pieces cover the raster.
 extents = comm.allgather(extent if piece.GetNumberOfPoints() > 0 else None)
@@ -67,16 +69,21 @@ for e in extents:
 expect(len(covered) == 16200 and all(0 <= i < 180 and 0 <= j < 90 for i, j in covered),
        "the pieces %s cover %d of the 16,200 points" % (extents, len(covered)))
 
-# What ParaView gathers on rank 0.
+# ParaView's data information: this rank's piece; reduced over the ranks, the whole raster.
 info = relief.GetDataInformation()
-if comm.rank == 0:
-    array = relief.PointData["Values"]
-    value_range = array.GetRange() if array is not None else None
-    expect(tuple(info.GetExtent()) == (0, 179, 0, 89, 0, 0) and
-           info.GetNumberOfPoints() == 16200 and value_range is not None and
-           abs(value_range[0] + 6526.538) < 1e-3 and abs(value_range[1] - 5211.506) < 1e-3,
-           "gathered data information: extent %s, %d points, range %s"
-           % (tuple(info.GetExtent()), info.GetNumberOfPoints(), value_range))
+array = relief.PointData["Values"]
+local_range = array.GetRange() if array is not None else (float("inf"), float("-inf"))
+expect(tuple(info.GetExtent()) == tuple(extent) and info.GetNumberOfPoints() == piece.GetNumberOfPoints(),
+       "data information: this rank's piece, extent %s, %d points"
+       % (tuple(info.GetExtent()), info.GetNumberOfPoints()))
+lo = comm.allreduce(local_range[0], op=MPI.MIN)
+hi = comm.allreduce(local_range[1], op=MPI.MAX)
+union = [comm.allreduce(extent[k], op=MPI.MIN if k % 2 == 0 else MPI.MAX) for k in range(6)]
+shared = 90 if comm.size == 2 else 0  # one boundary column of 90 points between the 2 pieces
+expect(tuple(union) == (0, 179, 0, 89, 0, 0) and points == 16200 + shared and
+       abs(lo + 6526.538) < 1e-3 and abs(hi - 5211.506) < 1e-3,
+       "reduced over the ranks: extent %s, %d points (16,200 and the shared column), range "
+       "(%.3f, %.3f)" % (tuple(union), points, lo, hi))
 
 total = comm.allreduce(len(failures))
 print("rank %d: %d failure(s) on all ranks" % (comm.rank, total))
