@@ -1153,6 +1153,12 @@ bool vtkGlobeMapProjection::ComputeShaderParameters(const double origin[2],
 bool vtkGlobeMapProjection::ComputeShaderParametersDouble(const double origin[2],
   const double pixelSize[2], int width, int height, double P[28])
 {
+  return this->ComputeShaderParametersAt(origin, pixelSize, width, height, nullptr, P);
+}
+
+bool vtkGlobeMapProjection::ComputeShaderParametersAt(const double origin[2],
+  const double pixelSize[2], int width, int height, const double reference[2], double P[28])
+{
   std::fill(P, P + NumberOfShaderParameters, NaN);
   if (!origin || !pixelSize || !Finite(origin[0]) || !Finite(origin[1]) ||
     !Finite(pixelSize[0]) || !Finite(pixelSize[1]) || !(pixelSize[0] > 0.0) ||
@@ -1165,9 +1171,15 @@ bool vtkGlobeMapProjection::ComputeShaderParametersDouble(const double origin[2]
   }
   const double a = this->SemiMajorAxis, f = this->Flattening;
   const double mapWidth = pixelSize[0] * width, mapHeight = pixelSize[1] * height;
-  // The reference point: the raster's centre. The kinds with an apex need one away from it
-  // (their formulas scale the reference's offset from the apex).
+  // The reference point: the raster's centre, or the one asked for, inside the raster. The
+  // kinds with an apex need one away from it (their formulas scale the reference's offset from
+  // the apex).
   double xr = origin[0] + 0.5 * mapWidth, yr = origin[1] - 0.5 * mapHeight;
+  if (reference && Finite(reference[0]) && Finite(reference[1]))
+  {
+    xr = std::max(origin[0], std::min(origin[0] + mapWidth, reference[0]));
+    yr = std::max(origin[1] - mapHeight, std::min(origin[1], reference[1]));
+  }
   const bool apexKind = this->Kind == PolarStereographic || this->IsConic();
   const double hemi = this->GetApexHemisphere();
   double apex[2] = { this->FalseEasting, this->FalseNorthing };

@@ -221,6 +221,15 @@ public:
   /// The same in double, for globe_projection.glsl's double C++ mirror (hi + lo pairs exact).
   bool ComputeShaderParametersDouble(const double origin[2], const double pixelSize[2],
     int width, int height, double parameters[28]);
+  /**
+   * The same in double with the reference point at the map point `reference` (clamped into the
+   * raster) instead of the raster's centre. The GPU's float offsets from the reference are
+   * relatively accurate, so they are exact to a small fraction of a texel only within some
+   * 10^5 texels of it: a streamed layer wider than that puts the reference under the view each
+   * frame (vtkGlobeLayerSet; Documentation/streaming.md, "Exact addressing").
+   */
+  bool ComputeShaderParametersAt(const double origin[2], const double pixelSize[2], int width,
+    int height, const double reference[2], double parameters[28]);
 
   /**
    * The globe_projection.glsl function that takes these parameters:

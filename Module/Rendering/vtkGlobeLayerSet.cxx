@@ -1046,6 +1046,15 @@ void EmitStreamedCoordinates(std::ostream& s, const Entry* e, const std::string&
   }
   s << "  vec4 st" << n << " = vec4(" << p << "Texels.xy, " << p << "Texels.zw + d" << n
     << " * " << p << "Pyramid.xy);\n";
+  if (e->Wraps)
+  {
+    // The reference follows the view, so a point across the seam lies a turn away: move the
+    // hi part by a turn (exact: it is on the grid of float's ulp at twice the width).
+    s << "  if (st" << n << ".x + st" << n << ".z >= " << p << "Pyramid.x) st" << n << ".x -= "
+      << p << "Pyramid.x;\n"
+      << "  else if (st" << n << ".x + st" << n << ".z < 0.0) st" << n << ".x += " << p
+      << "Pyramid.x;\n";
+  }
 }
 
 // A layer's filtered value (GLSL), with the screen derivatives dx, dy of its texture
@@ -1689,6 +1698,39 @@ void vtkGlobeLayerSet::SetGeodeticReference(const double direction[3], const dou
   }
   this->ReferenceLonLat[0] = std::atan2(q[1], q[0]);
   this->ReferenceLonLat[1] = std::atan2(q[2], std::hypot(q[0], q[1]));
+
+  // A streamed projected layer's float offsets from its projection's reference point are
+  // exact to a small fraction of a texel only within some 1e5 texels of it (2^-24 of the
+  // distance): the reference follows the view, the camera's sub-point clamped into the raster.
+  // Its hi + lo texel coordinates and the parameters are uniforms: nothing is rebuilt.
+  const double lon = vtkMath::DegreesFromRadians(this->ReferenceLonLat[0]);
+  const double lat = vtkMath::DegreesFromRadians(this->ReferenceLonLat[1]);
+  for (const auto& list : this->Internals->Roles)
+  {
+    for (Entry* e : list)
+    {
+      double xy[2], origin[2], pixel[2];
+      if (!e->Streamed || e->Function.empty() || !e->Projection ||
+        !e->Projection->ForwardInDomain(lon, lat, xy))
+      {
+        continue;
+      }
+      e->Layer->GetProjectedGeoTransform(origin, pixel);
+      double parameters[vtkGlobeMapProjection::NumberOfShaderParameters];
+      const bool warnings = vtkObject::GetGlobalWarningDisplay();
+      vtkObject::GlobalWarningDisplayOff();
+      const bool ok = e->Projection->ComputeShaderParametersAt(origin, pixel,
+        e->Layer->GetNumberOfColumns(), e->Layer->GetNumberOfRows(), xy, parameters);
+      vtkObject::SetGlobalWarningDisplay(warnings);
+      if (ok)
+      {
+        std::copy(parameters, parameters + vtkGlobeMapProjection::NumberOfShaderParameters,
+          e->Parameters);
+        e->Reference[0] = parameters[8];
+        e->Reference[1] = parameters[9];
+      }
+    }
+  }
 }
 
 void vtkGlobeLayerSet::GetReferenceDirection(double direction[3])
@@ -1719,6 +1761,15 @@ std::array<float, 2> SplitShort(double v, double& quantum)
   std::frexp(v, &exponent); // v = f 2^exponent, f in [0.5, 1)
   quantum = std::ldexp(1.0, exponent - 9);
   const double hi = std::floor(v / quantum + 0.5) * quantum;
+  return { static_cast<float>(hi), static_cast<float>(v - hi) };
+}
+
+// A texel coordinate in [0, span] as hi + lo with hi on the grid of float's ulp at 2 span, so
+// that hi +- span (the wrap of a streamed projected layer's coordinates) is exact in float.
+std::array<float, 2> SplitForWrap(double v, double span)
+{
+  const double q = std::ldexp(1.0, std::ilogb(2.0 * std::max(span, 1.0)) - 23);
+  const double hi = std::floor(v / q + 0.5) * q;
   return { static_cast<float>(hi), static_cast<float>(v - hi) };
 }
 
@@ -1812,8 +1863,8 @@ void vtkGlobeLayerSet::BindTextures(vtkShaderProgram* program, int roles)
         if (!e->Function.empty())
         {
           // The reference point's level-0 texel coordinates (globe_projection's p2.xy).
-          const std::array<float, 2> x = Split(e->Reference[0] * pyramid[0]);
-          const std::array<float, 2> y = Split(e->Reference[1] * pyramid[1]);
+          const std::array<float, 2> x = SplitForWrap(e->Reference[0] * pyramid[0], pyramid[0]);
+          const std::array<float, 2> y = SplitForWrap(e->Reference[1] * pyramid[1], pyramid[1]);
           const float texels[4] = { x[0], y[0], x[1], y[1] };
           program->SetUniform4f((p + "Texels").c_str(), texels);
         }

@@ -7,10 +7,17 @@
 // its own (lon, lat) (from the G-buffer, in double) except within 0.1 % of a texel of its
 // edges. Written as a tiled TIFF with its own reduced-resolution levels and a world file, zip-compressed
 // (the pattern compresses to a few MB), so the test costs seconds.
+// The same strip in Web Mercator (EPSG:3857, texels of 2 pi a / 2^20 = 38.2 m), a projected
+// layer: its texel coordinates are the projection's float offset from a reference point added
+// to the reference's own in hi + lo; the offset carries 2^-24 of the distance from the reference,
+// 1/32 texel at the raster's edge when the reference was the raster's centre. The reference now
+// follows the view (vtkGlobeLayerSet::SetGeodeticReference), and across the seam the hi part
+// moves by a turn: every pixel again shows its own texel.
 #include "vtkGlobeRenderingTestHelpers.h"
 #include "vtkGlobeTestHelpers.h"
 
 #include "vtkGlobePageCache.h"
+#include "vtkMath.h"
 
 #include <tiffio.h>
 
@@ -36,7 +43,7 @@ std::array<unsigned char, 3> Code(int x, int y)
 // Every level encodes its own texels the same way (the test looks at level 0 only; the
 // others must exist so that nothing is averaged from 2^26 texels): tiled, one reduced-
 // resolution IFD per level, as vtkGlobeRasterPreparer writes them.
-bool WriteRaster(const std::string& path)
+bool WriteRaster(const std::string& path, bool mercator)
 {
   TIFF* tif = TIFFOpen(path.c_str(), "w");
   if (!tif)
@@ -92,12 +99,21 @@ bool WriteRaster(const std::string& path)
   {
     return false;
   }
-  // A strip along the equator, all longitudes: texels of 360 / 2^20 degrees both ways.
-  const double texel = 360.0 / Width;
+  // A strip along the equator, all longitudes: texels of 360 / 2^20 degrees both ways, or of
+  // 2 pi a / 2^20 metres in Web Mercator.
+  const double texel = mercator ? 2.0 * vtkMath::Pi() * 6378137.0 / Width : 360.0 / Width;
+  const double west = mercator ? -vtkMath::Pi() * 6378137.0 : -180.0;
   std::ofstream world(path.substr(0, path.size() - 4) + ".tfw");
   world.precision(17);
-  world << texel << "\n0\n0\n" << -texel << "\n" << -180.0 + 0.5 * texel << "\n"
+  world << texel << "\n0\n0\n" << -texel << "\n" << west + 0.5 * texel << "\n"
         << 0.5 * Height * texel - 0.5 * texel << "\n";
+  if (mercator)
+  {
+    std::ofstream(path.substr(0, path.size() - 4) + ".prj")
+      << "PROJCS[\"WGS 84 / Pseudo-Mercator\",GEOGCS[\"WGS 84\",DATUM[\"WGS_1984\","
+         "SPHEROID[\"WGS 84\",6378137,298.257223563]],PRIMEM[\"Greenwich\",0],"
+         "UNIT[\"degree\",0.0174532925199433]],UNIT[\"metre\",1],AUTHORITY[\"EPSG\",\"3857\"]]";
+  }
   return static_cast<bool>(world);
 }
 
@@ -107,15 +123,18 @@ struct Count
   double WorstOffset = 0.0; // texels: how far past a texel edge a wrong pixel's position lies
 };
 
-// Every covered pixel against the level-0 texel at its G-buffer position (double).
-Count CheckFrame(vtkGlobeTest::Scene& scene, double margin)
+// Every covered pixel against the level-0 texel at its G-buffer position (double; Web
+// Mercator through vtkGlobeMapProjection).
+Count CheckFrame(vtkGlobeTest::Scene& scene, double margin, bool mercator)
 {
+  vtkNew<vtkGlobeMapProjection> webMercator;
+  webMercator->SetFromEPSG(3857);
   Count count;
   const int* size = scene.Window->GetSize();
   const std::vector<unsigned char> rgb = vtkGlobeTest::ReadPixels(scene.Window);
   const std::vector<float> depth = vtkGlobeTest::ReadDepth(scene.Window);
   const std::vector<float> g = vtkGlobeTest::ReadTexture(vtkGlobeMapperTesting::GetGBufferTexture(scene.Mapper));
-  const double texel = 360.0 / Width;
+  const double texel = mercator ? 2.0 * vtkMath::Pi() * 6378137.0 / Width : 360.0 / Width;
   for (size_t i = 0; i < static_cast<size_t>(size[0]) * size[1]; ++i)
   {
     if (!(depth[i] < 1.0f))
@@ -126,9 +145,14 @@ Count CheckFrame(vtkGlobeTest::Scene& scene, double margin)
     double p[3], llh[3];
     vtkGlobeTest::GBufferPoint(scene, &g[4 * i], false, p);
     scene.Body->CartesianToGeodetic(p, llh);
-    double tx = (llh[0] + 180.0) / texel;
+    double xy[2] = { llh[0], llh[1] };
+    if (mercator && !webMercator->ForwardInDomain(llh[0], llh[1], xy))
+    {
+      continue;
+    }
+    double tx = (xy[0] + (mercator ? vtkMath::Pi() * 6378137.0 : 180.0)) / texel;
     tx -= Width * std::floor(tx / Width);
-    const double ty = (0.5 * Height * texel - llh[1]) / texel;
+    const double ty = (0.5 * Height * texel - xy[1]) / texel;
     const double fx = tx - std::floor(tx), fy = ty - std::floor(ty);
     if (ty < 0.0 || ty >= Height || std::min(fx, 1.0 - fx) < margin || std::min(fy, 1.0 - fy) < margin)
     {
@@ -145,14 +169,17 @@ Count CheckFrame(vtkGlobeTest::Scene& scene, double margin)
   }
   return count;
 }
-} // namespace
 
-int TestGlobeStreamingAddressing(int, char*[])
+// One raster (geographic or Web Mercator) through six views; returns the wrong pixels and
+// adds the checked ones.
+int RunRaster(bool mercator, int& checked)
 {
   // Per process: a suite run beside a hand-run of the same test must not share the file.
-  const std::string path = Temp + "/streaming_addressing_" + std::to_string(getpid()) + ".tif";
+  const std::string path = Temp + "/streaming_addressing_" + (mercator ? "3857_" : "") +
+    std::to_string(getpid()) + ".tif";
   const auto start = std::chrono::steady_clock::now();
-  Checks.Expect(WriteRaster(path), "the 2^20 x 64 self-encoding raster is written");
+  Checks.Expect(WriteRaster(path, mercator),
+    std::string("the 2^20 x 64 self-encoding raster is written") + (mercator ? " (EPSG:3857)" : ""));
   std::printf("  wrote %s in %.1f s\n", path.c_str(),
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
 
@@ -174,7 +201,7 @@ int TestGlobeStreamingAddressing(int, char*[])
   const View views[] = { { 170.3, 300.0 }, { 179.99, 300.0 }, { -179.7, 300.0 }, { 90.01, 300.0 },
     { 170.30001, 30.0 }, { -0.02, 300.0 } };
   const double margin = 0.001; // texels (3.8 cm): the G-buffer position is good to about 1e-5 m here
-  int wrong = 0, checked = 0;
+  int wrong = 0;
   for (const View& v : views)
   {
     const double texel = 360.0 / Width;
@@ -192,20 +219,34 @@ int TestGlobeStreamingAddressing(int, char*[])
       }
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
-    const Count c = CheckFrame(scene, margin);
-    std::printf("  lon %10.5f, %5.0f m, settled after %3d frames: %5d px covered, %5d checked, "
+    const Count c = CheckFrame(scene, margin, mercator);
+    std::printf("  %s lon %10.5f, %5.0f m, settled after %3d frames: %5d px covered, %5d checked, "
                 "%4d show another texel (the worst %.4f texel inside its own)\n",
-      v.Lon, v.Height, frame + 1, c.Covered, c.Checked, c.Wrong, c.WorstOffset);
+      mercator ? "EPSG:3857" : "EPSG:4326", v.Lon, v.Height, frame + 1, c.Covered, c.Checked,
+      c.Wrong, c.WorstOffset);
     Checks.Expect(frame < 500, "streaming settles");
     Checks.Expect(c.Checked > 1000, vtkGlobeTest::Printf("lon %.5f, %.0f m: the raster covers the view", v.Lon, v.Height));
     wrong += c.Wrong;
     checked += c.Checked;
   }
   Checks.Expect(scene.Mapper->GetPageCache()->GetNumberOfLoadedPages() > 0, "the layer streams");
-  Checks.Expect(wrong == 0,
-    vtkGlobeTest::Printf("every pixel shows the texel at its own (lon, lat): %d of %d differ", wrong, checked));
-  Checks.Expect(vtkGlobeTest::NoGLError(), "no OpenGL error");
   std::remove(path.c_str());
   std::remove((path.substr(0, path.size() - 4) + ".tfw").c_str());
+  std::remove((path.substr(0, path.size() - 4) + ".prj").c_str());
+  return wrong;
+}
+} // namespace
+
+int TestGlobeStreamingAddressing(int, char*[])
+{
+  int checked = 0, checkedMercator = 0;
+  const int wrong = RunRaster(false, checked);
+  Checks.Expect(wrong == 0,
+    vtkGlobeTest::Printf("geographic: every pixel shows the texel at its own (lon, lat): %d of %d differ", wrong, checked));
+  const int wrongMercator = RunRaster(true, checkedMercator);
+  Checks.Expect(wrongMercator == 0,
+    vtkGlobeTest::Printf("Web Mercator: every pixel shows the texel at its own (lon, lat): %d of %d differ",
+      wrongMercator, checkedMercator));
+  Checks.Expect(vtkGlobeTest::NoGLError(), "no OpenGL error");
   return Checks.Result();
 }
