@@ -18,6 +18,7 @@
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkLogger.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -743,6 +744,46 @@ double* vtkGlobeLayer::GetGeographicExtent()
 {
   this->GetGeographicExtent(this->ExtentResult);
   return this->ExtentResult;
+}
+
+void vtkGlobeLayer::GetFeatherBorder(double border[2])
+{
+  border[0] = border[1] = 0.0;
+  const int w = this->GetNumberOfColumns(), h = this->GetNumberOfRows();
+  if (!this->Valid || w <= 0 || h <= 0)
+  {
+    return;
+  }
+  if (!(this->FeatherDistance > 0.0))
+  {
+    border[0] = this->FeatherWidth / w;
+    border[1] = this->FeatherWidth / h;
+    return;
+  }
+  // The raster's size on the ground at its centre, in metres.
+  double width = 0.0, height = 0.0;
+  if (this->ModelType == Projected)
+  {
+    double origin[2], pixel[2];
+    this->GetProjectedGeoTransform(origin, pixel);
+    width = pixel[0] * w;
+    height = pixel[1] * h;
+  }
+  else
+  {
+    double e[4];
+    this->GetGeographicExtent(e);
+    const double a = this->GetDatumSemiMajorAxis() > 0.0 ? this->GetDatumSemiMajorAxis() : 6378137.0;
+    const double b = this->GetDatumSemiMinorAxis() > 0.0 ? this->GetDatumSemiMinorAxis() : a * (1.0 - 1.0 / 298.257223563);
+    const double e2 = 1.0 - (b * b) / (a * a);
+    const double phi = vtkMath::RadiansFromDegrees(0.5 * (e[2] + e[3]));
+    const double w2 = 1.0 - e2 * std::sin(phi) * std::sin(phi);
+    const double normal = a / std::sqrt(w2), meridian = a * (1.0 - e2) / (w2 * std::sqrt(w2));
+    width = vtkMath::RadiansFromDegrees(e[1] - e[0]) * normal * std::cos(phi);
+    height = vtkMath::RadiansFromDegrees(e[3] - e[2]) * meridian;
+  }
+  border[0] = width > 0.0 ? std::min(0.5, this->FeatherDistance / width) : 0.0;
+  border[1] = height > 0.0 ? std::min(0.5, this->FeatherDistance / height) : 0.0;
 }
 
 void vtkGlobeLayer::GetProjectedGeoTransform(double origin[2], double pixelSize[2])
@@ -1825,6 +1866,7 @@ void vtkGlobeLayer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfImplausibleValues: " << this->NumberOfImplausibleValues << "\n";
   os << indent << "BlendMode: " << this->GetBlendModeAsString() << "\n";
   os << indent << "FeatherWidth: " << this->FeatherWidth << "\n";
+  os << indent << "FeatherDistance: " << this->FeatherDistance << " m\n";
   os << indent << "ColorMatch: " << this->ColorMatch << "\n";
   os << indent << "ColorMatchWidth: " << this->ColorMatchWidth << "\n";
   os << indent << "ProjectionQualityWeight: " << (this->ProjectionQualityWeight ? "On" : "Off")

@@ -154,6 +154,13 @@ public:
    *   layer below shows (default: everything is valid).
    * - FeatherWidth: the weight ramps from 0 to 1 over this many texels inside the layer's
    *   border (8 by default; 0 = a hard edge). Borders a global layer wraps across have none.
+   * - FeatherDistance (metres, default 0: off): when positive, the ramp spans this distance on
+   *   the ground instead, whatever the layer's resolution; so an inset whose heights disagree
+   *   with the terrain below by d meets it in a slope of d / FeatherDistance, not a wall. The
+   *   distance is converted to a fraction of the raster at its centre (geographic: the radii
+   *   of curvature of the layer's datum there, WGS84 when the file names none; projected: map
+   *   units are metres), so it holds exactly at the centre's latitude and within the map's
+   *   scale distortion elsewhere. At most half the raster either way.
    * - ProjectionQualityWeight: multiply the weight by Kooima's projection-quality weight
    *   clamp(1 - |log k / log n|, 0, 1), k the anisotropy of the pixel's footprint in texels
    *   and n = ProjectionQualityLimit, so an inset in a projection that stretches texels here
@@ -178,6 +185,15 @@ public:
   const char* GetBlendModeAsString();
   vtkSetClampMacro(FeatherWidth, double, 0.0, 1e6);
   vtkGetMacro(FeatherWidth, double);
+  vtkSetClampMacro(FeatherDistance, double, 0.0, 1e8);
+  vtkGetMacro(FeatherDistance, double);
+  /**
+   * The feathered border the composition uses, as fractions of the raster's width and height
+   * (east-west, north-south), from FeatherDistance when it is positive, else from
+   * FeatherWidth; before the borders a wrap or the poles remove. (0, 0) for a layer without
+   * valid data.
+   */
+  void GetFeatherBorder(double border[2]);
   vtkSetMacro(ProjectionQualityWeight, bool);
   vtkGetMacro(ProjectionQualityWeight, bool);
   vtkBooleanMacro(ProjectionQualityWeight, bool);
@@ -549,6 +565,7 @@ protected:
   double ValidRange[2] = { -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
   int BlendMode = Replace;
   double FeatherWidth = 8.0;
+  double FeatherDistance = 0.0;
   bool ColorMatch = false;
   double ColorMatchWidth = 64.0;
   bool ProjectionQualityWeight = false;

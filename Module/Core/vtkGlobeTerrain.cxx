@@ -112,7 +112,8 @@ struct vtkGlobeTerrain::vtkInternals
         c.Geoid = geoid;
       }
       c.Wraps = layer->IsGlobal();
-      const double feather = layer->GetFeatherWidth();
+      double feather[2];
+      layer->GetFeatherBorder(feather);
       if (layer->GetModelType() == vtkGlobeLayer::Projected)
       {
         c.Projection = vtkSmartPointer<vtkGlobeMapProjection>::New();
@@ -122,14 +123,14 @@ struct vtkGlobeTerrain::vtkInternals
           continue; // the renderer cannot draw it either
         }
         layer->GetProjectedGeoTransform(c.Origin, c.Pixel);
-        c.Border[0] = c.Wraps ? 0.0 : feather / c.Width;
-        c.Border[1] = feather / c.Height;
+        c.Border[0] = c.Wraps ? 0.0 : feather[0];
+        c.Border[1] = feather[1];
       }
       else if (layer->GetModelType() == vtkGlobeLayer::Geographic)
       {
         layer->GetGeographicExtent(c.Extent);
-        c.Border[0] = c.Wraps ? 0.0 : feather / c.Width;
-        c.Border[1] = c.Extent[2] <= -90.0 && c.Extent[3] >= 90.0 ? 0.0 : feather / c.Height;
+        c.Border[0] = c.Wraps ? 0.0 : feather[0];
+        c.Border[1] = c.Extent[2] <= -90.0 && c.Extent[3] >= 90.0 ? 0.0 : feather[1];
       }
       else
       {

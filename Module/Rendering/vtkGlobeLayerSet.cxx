@@ -514,14 +514,15 @@ int vtkGlobeLayerSet::Update()
     }
     e.Reported = false;
     e.Active = true;
-    const double feather = layer->GetFeatherWidth();
+    double feather[2];
+    layer->GetFeatherBorder(feather);
     e.Border[2] = 1.0 / std::log(layer->GetProjectionQualityLimit());
     if (!e.Function.empty())
     {
       // A cylindrical projection one whole turn wide wraps like a global geographic layer.
       e.Wraps = layer->IsGlobal();
-      e.Border[0] = e.Wraps ? 0.0 : feather / layer->GetNumberOfColumns();
-      e.Border[1] = feather / layer->GetNumberOfRows();
+      e.Border[0] = e.Wraps ? 0.0 : feather[0];
+      e.Border[1] = feather[1];
       order.push_back(&e);
       continue;
     }
@@ -540,9 +541,9 @@ int vtkGlobeLayerSet::Update()
     });
     // A global layer wraps in longitude and has no east/west border; one that reaches both
     // poles has no north/south border.
-    e.Border[0] = e.Wraps ? 0.0 : feather / layer->GetNumberOfColumns();
+    e.Border[0] = e.Wraps ? 0.0 : feather[0];
     const bool polesCovered = extent[2] <= -90.0 && extent[3] >= 90.0;
-    e.Border[1] = polesCovered ? 0.0 : feather / layer->GetNumberOfRows();
+    e.Border[1] = polesCovered ? 0.0 : feather[1];
     order.push_back(&e);
   }
   // Observers of later layers may have removed earlier ones.

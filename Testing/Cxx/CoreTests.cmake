@@ -14,6 +14,7 @@ set(globe_core_tests
   TestGlobeRasterReaderHardening.cxx
   TestGlobeLayerInput.cxx
   TestGlobeLayerReprojection.cxx
+  TestGlobeFeatherDistance.cxx
   TestGlobeMapProjection.cxx
   TestGlobeMapProjectionShader.cxx
   TestGlobePageSource.cxx)
