@@ -89,8 +89,8 @@ def name(row):
     return "PGM %s: %s" % (row["family"], row["setting"])
 
 
-def chart_view(title):
-    """A white 900 x 560 off-screen chart view with a legend; returns (view, chart)."""
+def chart_view(title, size=(900, 560)):
+    """A white off-screen chart view with a legend; returns (view, chart)."""
     # VTK is imported here so --no-images works without a display.
     from vtkmodules.vtkChartsCore import vtkChartXY
     from vtkmodules.vtkViewsContext2D import vtkContextView
@@ -100,7 +100,7 @@ def chart_view(title):
 
     view = vtkContextView()
     view.GetRenderer().SetBackground(1, 1, 1)
-    view.GetRenderWindow().SetSize(900, 560)
+    view.GetRenderWindow().SetSize(*size)
     view.GetRenderWindow().SetOffScreenRendering(1)
     chart = vtkChartXY()
     view.GetScene().AddItem(chart)

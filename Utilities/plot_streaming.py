@@ -13,27 +13,10 @@ import argparse
 import json
 import os
 
-import plot_benchmark  # the same PNG writing (this script's folder is on sys.path)
+import plot_benchmark  # the same charts and PNG writing (this script's folder is on sys.path)
 
 COLORS = [(31, 119, 180), (214, 39, 40), (44, 160, 44), (148, 103, 189), (255, 127, 14),
           (140, 86, 75), (127, 127, 127), (188, 189, 34)]
-
-
-def chart_view(title, size=(900, 520)):
-    from vtkmodules.vtkChartsCore import vtkChartXY
-    from vtkmodules.vtkViewsContext2D import vtkContextView
-    import vtkmodules.vtkRenderingContextOpenGL2  # noqa: F401 (the chart's OpenGL backend)
-    import vtkmodules.vtkRenderingFreeType  # noqa: F401 (text)
-    import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
-    view = vtkContextView()
-    view.GetRenderer().SetBackground(1, 1, 1)
-    view.GetRenderWindow().SetSize(*size)
-    view.GetRenderWindow().SetOffScreenRendering(1)
-    chart = vtkChartXY()
-    view.GetScene().AddItem(chart)
-    chart.SetShowLegend(True)
-    chart.SetTitle(title)
-    return view, chart
 
 
 def add_line(chart, name_x, name_y, points, rgb, corner=None):
@@ -79,8 +62,9 @@ def main():
     os.makedirs(args.images, exist_ok=True)
     from vtkmodules.vtkChartsCore import vtkAxis
 
-    view, chart = chart_view("Flight Earth -> Rainier -> Earth: frame time (%s, %dx%d)" % (
-        data.get("gl_renderer", "?"), data["window"][0], data["window"][1]))
+    view, chart = plot_benchmark.chart_view(
+        "Flight Earth -> Rainier -> Earth: frame time (%s, %dx%d)" % (
+            data.get("gl_renderer", "?"), data["window"][0], data["window"][1]), (900, 520))
     for i, run in enumerate(data["runs"]):
         add_line(chart, "frame", run["label"], list(enumerate(run["frame_ms"], 1)),
                  COLORS[i % len(COLORS)])
@@ -95,7 +79,7 @@ def main():
     chart.GetAxis(vtkAxis.RIGHT).SetLogScale(True)
     save(view, os.path.join(args.images, "streaming-flight.png"))
 
-    view, chart = chart_view("Frame time and memory against data size")
+    view, chart = plot_benchmark.chart_view("Frame time and memory against data size", (900, 520))
     for j, mode in enumerate(("streamed", "in-core")):
         runs = sorted([r for r in data["runs"] if r["mode"] == mode], key=lambda r: r["width"])
         if not runs:

@@ -457,42 +457,6 @@ vec2 globe_azimuthalOffset(float ratio, float ratioM1, float dTheta, vec4 p2, ve
   return globe_projectionTexture(ratioM1 * cl - 2.0f * sh * sh, ratio * sl, p2, p3);
 }
 
-// Polar stereographic, north (p2.w = 1) or south (p2.w = -1, latitudes mirrored). With
-// E = t(lat)/t(lat_r) = exp(-(psi - psi_r)) and dLon = lon - lon_r, the map offset from the
-// reference is F_r (E e^(i dLon) - 1) = F_r (X + iY) with X = (E - 1) cos dLon - 2 sin^2(dLon/2),
-// Y = E sin dLon. E - 1 comes from expm1 of the accurate psi difference near the reference
-// and from the ratio of t = tan(colat/2) exp(e atanh(e sin lat)) elsewhere (the pole: t = 0).
-vec2 globe_projectPolarStereographic(float lonHi, float lonLo, float latHi, float latLo,
-  vec4 p0, vec4 p1, vec4 p2, vec4 p3, vec4 p4, vec4 p5, vec4 p6)
-{
-  float e = p2.z;
-  float dLon = 0.0f;
-  float dLat = 0.0f;
-  float sinLat = 0.0f;
-  float cosLat = 0.0f;
-  float dSin = 0.0f;
-  if (!globe_conformalStart(lonHi, lonLo, latHi, latLo, p2.w, p0, p1, p4, dLon, dLat, sinLat,
-        cosLat, dSin))
-  {
-    return vec2(-1.0f, -1.0f);
-  }
-  float ratio = 0.0f;
-  float ratioM1 = 0.0f;
-  if (abs(dSin) < 0.25f * cosLat * p1.w)
-  {
-    float dPsi = globe_isometricLatitudeDifference(dSin, sinLat, cosLat, p1.z, p1.w, e);
-    ratioM1 = globe_expm1(-dPsi);
-    ratio = 1.0f + ratioM1;
-  }
-  else
-  {
-    float t = cosLat / (1.0f + sinLat) * globe_exp(e * globe_atanh(e * sinLat));
-    ratio = t / p5.x;
-    ratioM1 = ratio - 1.0f;
-  }
-  return globe_azimuthalOffset(ratio, ratioM1, dLon, p2, p3);
-}
-
 // The conics' angle from the central meridian stays in [-pi, pi] (the cone is cut opposite the
 // central meridian, and n dLon is not 2 pi periodic for n < 1), but the reference's twin puts
 // dLon in [-pi, pi] around the reference: add or take a turn where the two disagree.
@@ -505,14 +469,16 @@ float globe_conicLongitudeDelta(float dLon, float lonFromCentral)
                              : dLon);
 }
 
-// Lambert conformal conic: the polar stereographic formulas with the cone constant n (p5.y,
-// positive: latitudes are mirrored by p2.w for a southern apex), E = (t / t_r)^n and the angle
-// n dLon.
-vec2 globe_projectConformalConic(float lonHi, float lonLo, float latHi, float latLo, vec4 p0,
-  vec4 p1, vec4 p2, vec4 p3, vec4 p4, vec4 p5, vec4 p6)
+// The conformal projections with an apex, north (p2.w = 1) or south (p2.w = -1, latitudes
+// mirrored): polar stereographic is Lambert's conformal conic with cone constant n = 1. With
+// E = (t(lat)/t(lat_r))^n = exp(-n (psi - psi_r)) and dLon = lon - lon_r, the map offset from
+// the reference is F_r (E e^(i n dLon) - 1) (globe_azimuthalOffset). E - 1 comes from expm1 of
+// the accurate psi difference near the reference and from the ratio of t = tan(colat/2)
+// exp(e atanh(e sin lat)) elsewhere (the apex: t = 0); cut: keep n dLon within the cone's cut.
+vec2 globe_conformalApex(float lonHi, float lonLo, float latHi, float latLo, float n, bool cut,
+  vec4 p0, vec4 p1, vec4 p2, vec4 p3, vec4 p4, vec4 p5, vec4 p6)
 {
   float e = p2.z;
-  float n = p5.y;
   float dLon = 0.0f;
   float dLat = 0.0f;
   float sinLat = 0.0f;
@@ -534,10 +500,28 @@ vec2 globe_projectConformalConic(float lonHi, float lonLo, float latHi, float la
   else
   {
     float t = cosLat / (1.0f + sinLat) * globe_exp(e * globe_atanh(e * sinLat));
-    ratio = t > 0.0f ? globe_exp(n * globe_log(t / p5.x)) : 0.0f;
+    ratio = n == 1.0f ? t / p5.x : (t > 0.0f ? globe_exp(n * globe_log(t / p5.x)) : 0.0f);
     ratioM1 = ratio - 1.0f;
   }
-  return globe_azimuthalOffset(ratio, ratioM1, n * globe_conicLongitudeDelta(dLon, p6.x), p2, p3);
+  float dTheta = n * (cut ? globe_conicLongitudeDelta(dLon, p6.x) : dLon);
+  return globe_azimuthalOffset(ratio, ratioM1, dTheta, p2, p3);
+}
+
+// Polar stereographic (p5.x = t(lat_r)).
+vec2 globe_projectPolarStereographic(float lonHi, float lonLo, float latHi, float latLo,
+  vec4 p0, vec4 p1, vec4 p2, vec4 p3, vec4 p4, vec4 p5, vec4 p6)
+{
+  return globe_conformalApex(
+    lonHi, lonLo, latHi, latLo, 1.0f, false, p0, p1, p2, p3, p4, p5, p6);
+}
+
+// Lambert conformal conic (p5 = (t(lat_r), n), n > 0 with latitudes mirrored for a southern
+// apex; p6.x = lon_r - lon0).
+vec2 globe_projectConformalConic(float lonHi, float lonLo, float latHi, float latLo, vec4 p0,
+  vec4 p1, vec4 p2, vec4 p3, vec4 p4, vec4 p5, vec4 p6)
+{
+  return globe_conformalApex(
+    lonHi, lonLo, latHi, latLo, p5.y, true, p0, p1, p2, p3, p4, p5, p6);
 }
 
 // Albers equal-area conic, and Lambert azimuthal equal-area in a polar aspect (n = 1): the
