@@ -326,6 +326,15 @@ int TestGlobeMapProjection(int, char*[])
   ExpectPoint(p, "LCC 2SP, Texas South Central (GN 7-2)", -96.0, 28.5, 2963503.91 * usFoot,
     254759.80 * usFoot, 0.01 * usFoot);
 
+  std::printf("The table's codes against PROJ:\n");
+  ExpectLikePROJ(4087, vtkGlobeMapProjection::Equirectangular, "WGS 84 / World Equidistant Cylindrical");
+  ExpectLikePROJ(3395, vtkGlobeMapProjection::Mercator, "WGS 84 / World Mercator");
+  ExpectLikePROJ(3857, vtkGlobeMapProjection::WebMercator, "WGS 84 / Pseudo-Mercator");
+  ExpectLikePROJ(3413, vtkGlobeMapProjection::PolarStereographic, "NSIDC Sea Ice Polar Stereographic North");
+  ExpectLikePROJ(3031, vtkGlobeMapProjection::PolarStereographic, "Antarctic Polar Stereographic");
+  ExpectLikePROJ(32661, vtkGlobeMapProjection::PolarStereographic, "UPS North");
+  ExpectLikePROJ(32631, vtkGlobeMapProjection::TransverseMercator, "UTM zone 31N");
+  ExpectLikePROJ(32760, vtkGlobeMapProjection::TransverseMercator, "UTM zone 60S");
   std::printf("EPSG codes from PROJ's database:\n");
   ExpectLikePROJ(2154, vtkGlobeMapProjection::LambertConformalConic, "RGF93 / Lambert-93");
   ExpectLikePROJ(3034, vtkGlobeMapProjection::LambertConformalConic, "ETRS89 / LCC Europe");
