@@ -109,22 +109,26 @@ def chart_view(title, size=(900, 560)):
     return view, chart
 
 
-def add_series(chart, title, points, rgb, marker, line=False):
-    """(x, y) points as markers (and a line through them with line=True)."""
-    from vtkmodules.vtkChartsCore import vtkChart
+def points_table(name_x, name_y, points):
+    """A two-column vtkTable of (x, y) points, the columns named for the chart's legend."""
     from vtkmodules.vtkCommonCore import vtkFloatArray
     from vtkmodules.vtkCommonDataModel import vtkTable
     table = vtkTable()
-    x = vtkFloatArray()
-    x.SetName("frame ms")
-    y = vtkFloatArray()
-    y.SetName(title)
-    table.AddColumn(x)
-    table.AddColumn(y)
+    for name in (name_x, name_y):
+        column = vtkFloatArray()
+        column.SetName(name)
+        table.AddColumn(column)
     table.SetNumberOfRows(len(points))
-    for i, (px, py) in enumerate(points):
-        table.SetValue(i, 0, px)
-        table.SetValue(i, 1, py)
+    for i, (x, y) in enumerate(points):
+        table.SetValue(i, 0, x)
+        table.SetValue(i, 1, y)
+    return table
+
+
+def add_series(chart, title, points, rgb, marker, line=False):
+    """(x, y) points as markers (and a line through them with line=True)."""
+    from vtkmodules.vtkChartsCore import vtkChart
+    table = points_table("frame ms", title, points)
     plot = chart.AddPlot(vtkChart.LINE if line else vtkChart.POINTS)
     plot.SetInputData(table, 0, 1)
     plot.SetColor(rgb[0], rgb[1], rgb[2], 255)
@@ -133,6 +137,18 @@ def add_series(chart, title, points, rgb, marker, line=False):
     if marker:
         plot.SetMarkerStyle(marker)
         plot.SetMarkerSize(10)
+
+
+def time_error_axes(chart, time_title):
+    """Log axes: frame time along the bottom, terrain error (p95 px) up the left."""
+    from vtkmodules.vtkChartsCore import vtkAxis
+    bottom = chart.GetAxis(vtkAxis.BOTTOM)
+    bottom.SetTitle(time_title)
+    bottom.SetLogScale(True)
+    left = chart.GetAxis(vtkAxis.LEFT)
+    left.SetTitle("terrain error p95 (px)")
+    left.SetLogScale(True)
+    return bottom, left
 
 
 def plot_scene(scene, rows, front, path):
@@ -177,12 +193,7 @@ def plot_scene(scene, rows, front, path):
                    [(r["frame_ms"]["median"], max(error_of(r), floor)) for r in front],
                    (0, 0, 0), 0, line=True)
 
-    bottom = chart.GetAxis(vtkAxis.BOTTOM)
-    bottom.SetTitle("frame time, median (ms)")
-    bottom.SetLogScale(True)
-    left = chart.GetAxis(vtkAxis.LEFT)
-    left.SetTitle("terrain error p95 (px)")
-    left.SetLogScale(True)
+    bottom, left = time_error_axes(chart, "frame time, median (ms)")
     times = [r["frame_ms"]["median"] for r in rows if r["frame_ms"]["median"]]
     bottom.SetBehavior(vtkAxis.FIXED)
     bottom.SetRange(min(times) / 1.5, max(times) * 1.5)
@@ -348,12 +359,7 @@ def plot_windows(scene, table, path):
         if pts:
             add_series(chart, "%s grid (%s)" % (policy, ", ".join("%d×%d" % w for w in windows)),
                        pts, rgb, marker, line=True)
-    bottom = chart.GetAxis(vtkAxis.BOTTOM)
-    bottom.SetTitle("frame time, median (ms); windows from small to large")
-    bottom.SetLogScale(True)
-    left = chart.GetAxis(vtkAxis.LEFT)
-    left.SetTitle("terrain error p95 (px)")
-    left.SetLogScale(True)
+    bottom, left = time_error_axes(chart, "frame time, median (ms); windows from small to large")
     if every:
         bottom.SetBehavior(vtkAxis.FIXED)
         bottom.SetRange(min(t for t, _ in every) / 1.3, max(t for t, _ in every) * 1.3)

@@ -22,17 +22,7 @@ COLORS = [(31, 119, 180), (214, 39, 40), (44, 160, 44), (148, 103, 189), (255, 1
 def add_line(chart, name_x, name_y, points, rgb, corner=None):
     """A line through the points (markers alone where there are fewer than two)."""
     from vtkmodules.vtkChartsCore import vtkChart
-    from vtkmodules.vtkCommonCore import vtkFloatArray
-    from vtkmodules.vtkCommonDataModel import vtkTable
-    table = vtkTable()
-    for name in (name_x, name_y):
-        a = vtkFloatArray()
-        a.SetName(name)
-        table.AddColumn(a)
-    table.SetNumberOfRows(len(points))
-    for i, (x, y) in enumerate(points):
-        table.SetValue(i, 0, x)
-        table.SetValue(i, 1, y)
+    table = plot_benchmark.points_table(name_x, name_y, points)
     single = len(points) < 2
     plot = chart.AddPlot(vtkChart.POINTS if single else vtkChart.LINE)
     plot.SetInputData(table, 0, 1)

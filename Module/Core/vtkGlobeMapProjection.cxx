@@ -536,8 +536,16 @@ void vtkGlobeMapProjection::SetToLambertConformalConic(double standardParallel1,
   double standardParallel2, double latitudeOfOrigin, double centralMeridian, double falseEasting,
   double falseNorthing)
 {
-  this->SetParameters(LambertConformalConic, centralMeridian, standardParallel1, 90.0, 1.0,
-    latitudeOfOrigin, falseEasting, falseNorthing);
+  this->SetToConic(LambertConformalConic, standardParallel1, standardParallel2, latitudeOfOrigin,
+    centralMeridian, falseEasting, falseNorthing);
+}
+
+void vtkGlobeMapProjection::SetToConic(int kind, double standardParallel1,
+  double standardParallel2, double latitudeOfOrigin, double centralMeridian, double falseEasting,
+  double falseNorthing)
+{
+  this->SetParameters(kind, centralMeridian, standardParallel1, 90.0, 1.0, latitudeOfOrigin,
+    falseEasting, falseNorthing);
   this->StandardParallel2 = standardParallel2;
 }
 
@@ -552,9 +560,8 @@ void vtkGlobeMapProjection::SetToAlbersEqualArea(double standardParallel1,
   double standardParallel2, double latitudeOfOrigin, double centralMeridian, double falseEasting,
   double falseNorthing)
 {
-  this->SetParameters(AlbersEqualArea, centralMeridian, standardParallel1, 90.0, 1.0,
-    latitudeOfOrigin, falseEasting, falseNorthing);
-  this->StandardParallel2 = standardParallel2;
+  this->SetToConic(AlbersEqualArea, standardParallel1, standardParallel2, latitudeOfOrigin,
+    centralMeridian, falseEasting, falseNorthing);
 }
 
 void vtkGlobeMapProjection::SetToLambertAzimuthalEqualArea(
@@ -680,6 +687,14 @@ bool vtkGlobeMapProjection::SetFromPROJ(int code)
   {
     return false;
   }
+  // The definition's projection on `p` (the candidate checked against PROJ, then this one).
+  const auto apply = [](vtkGlobeMapProjection* p, const PROJDefinition& d) {
+    p->SemiMajorAxis = d.A;
+    p->Flattening = d.F;
+    p->SetParameters(d.Kind, d.CentralMeridian, d.StandardParallel, d.LatitudeOfTrueScale,
+      d.ScaleFactor, d.LatitudeOfOrigin, d.FalseEasting, d.FalseNorthing);
+    p->StandardParallel2 = d.StandardParallel2;
+  };
   PROJDefinition d;
   {
     std::lock_guard<std::mutex> lock(PROJMutex);
@@ -697,12 +712,7 @@ bool vtkGlobeMapProjection::SetFromPROJ(int code)
       if (d.Usable)
       {
         vtkNew<vtkGlobeMapProjection> candidate;
-        candidate->SemiMajorAxis = d.A;
-        candidate->Flattening = d.F;
-        candidate->SetParameters(d.Kind, d.CentralMeridian, d.StandardParallel,
-          d.LatitudeOfTrueScale, d.ScaleFactor, d.LatitudeOfOrigin, d.FalseEasting,
-          d.FalseNorthing);
-        candidate->StandardParallel2 = d.StandardParallel2;
+        apply(candidate, d);
         PROJScope scope;
         const std::string target = "EPSG:" + std::to_string(code);
         PJ* raw = scope.Keep(
@@ -737,16 +747,11 @@ bool vtkGlobeMapProjection::SetFromPROJ(int code)
       definitions[code] = d;
     }
   }
-  if (!d.Usable)
+  if (d.Usable)
   {
-    return false;
+    apply(this, d);
   }
-  this->SemiMajorAxis = d.A;
-  this->Flattening = d.F;
-  this->SetParameters(d.Kind, d.CentralMeridian, d.StandardParallel, d.LatitudeOfTrueScale,
-    d.ScaleFactor, d.LatitudeOfOrigin, d.FalseEasting, d.FalseNorthing);
-  this->StandardParallel2 = d.StandardParallel2;
-  return true;
+  return d.Usable;
 }
 
 //------------------------------------------------------------------------------
@@ -1272,30 +1277,30 @@ bool vtkGlobeMapProjection::ComputeShaderParametersAt(const double origin[2],
       m[1] = -fy / mapWidth;
       m[2] = -hemi * fy / mapHeight;
       m[3] = -hemi * fx / mapHeight;
-      const double s = std::sin(latR);
-      const double colat = 0.5 * Pi - latR;
-      P[20] = std::sin(colat) / (1.0 + std::cos(colat)) * std::exp(e * std::atanh(e * s));
       // The cone constant n: the meridian convergence per unit of longitude.
       const double n = (this->Kind == LambertConformalConic || this->Kind == AlbersEqualArea)
         ? MakeConic(this).ConeConstant(lonLat[1])
         : 1.0;
-      if (this->Kind != PolarStereographic)
+      const double sr = std::sin(latR);
+      if (this->Kind == PolarStereographic || this->Kind == LambertConformalConic)
       {
-        P[21] = n;
+        // t(lat_r) = tan(colat_r / 2) exp(e atanh(e sin lat_r)).
+        const double colat = 0.5 * Pi - latR;
+        P[20] = std::sin(colat) / (1.0 + std::cos(colat)) * std::exp(e * std::atanh(e * sr));
       }
-      if (this->Kind == AlbersEqualArea || this->Kind == LambertAzimuthalEqualArea)
+      else
       {
         // rho^2 = (a^2 / n^2)(C - n q): u = rho^2 / rho_r^2 - 1 = K (q - q_r) / (1 - e^2).
         P[20] = -(1.0 - e * e) * a * a / (n * (fx * fx + fy * fy));
       }
       if (this->Kind != PolarStereographic)
       {
+        P[21] = n;
         P[24] = std::remainder(lonR - this->CentralMeridian * Deg, 2.0 * Pi);
       }
       if (this->Kind == LambertAzimuthalEqualArea)
       {
         // (q_p - q_r) / (1 - e^2), q / (1 - e^2) = sin / (1 - e^2 sin^2) + atanh(e sin) / e.
-        const double sr = std::sin(latR);
         const auto qOver = [e](double s) {
           return s / (1.0 - e * e * s * s) + (e > 0.0 ? std::atanh(e * s) / e : s);
         };

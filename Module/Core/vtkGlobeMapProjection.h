@@ -296,6 +296,8 @@ private:
     double falseNorthing);
   bool SetFromEPSGQuietly(int code);
   bool SetFromPROJ(int code);
+  void SetToConic(int kind, double standardParallel1, double standardParallel2,
+    double latitudeOfOrigin, double centralMeridian, double falseEasting, double falseNorthing);
   // +1 when the conic's apex (or the azimuthal projection's centre) is the north pole.
   double GetApexHemisphere();
   bool IsConic();

@@ -326,27 +326,39 @@ int TestGlobeMapProjection(int, char*[])
   ExpectPoint(p, "LCC 2SP, Texas South Central (GN 7-2)", -96.0, 28.5, 2963503.91 * usFoot,
     254759.80 * usFoot, 0.01 * usFoot);
 
-  std::printf("The table's codes against PROJ:\n");
-  ExpectLikePROJ(4087, vtkGlobeMapProjection::Equirectangular, "WGS 84 / World Equidistant Cylindrical");
-  ExpectLikePROJ(3395, vtkGlobeMapProjection::Mercator, "WGS 84 / World Mercator");
-  ExpectLikePROJ(3857, vtkGlobeMapProjection::WebMercator, "WGS 84 / Pseudo-Mercator");
-  ExpectLikePROJ(3413, vtkGlobeMapProjection::PolarStereographic, "NSIDC Sea Ice Polar Stereographic North");
-  ExpectLikePROJ(3031, vtkGlobeMapProjection::PolarStereographic, "Antarctic Polar Stereographic");
-  ExpectLikePROJ(32661, vtkGlobeMapProjection::PolarStereographic, "UPS North");
-  ExpectLikePROJ(32631, vtkGlobeMapProjection::TransverseMercator, "UTM zone 31N");
-  ExpectLikePROJ(32760, vtkGlobeMapProjection::TransverseMercator, "UTM zone 60S");
-  std::printf("EPSG codes from PROJ's database:\n");
-  ExpectLikePROJ(2154, vtkGlobeMapProjection::LambertConformalConic, "RGF93 / Lambert-93");
-  ExpectLikePROJ(3034, vtkGlobeMapProjection::LambertConformalConic, "ETRS89 / LCC Europe");
-  ExpectLikePROJ(3112, vtkGlobeMapProjection::LambertConformalConic, "GDA94 / Geoscience Australia Lambert");
-  ExpectLikePROJ(5070, vtkGlobeMapProjection::AlbersEqualArea, "NAD83 / Conus Albers");
-  ExpectLikePROJ(3577, vtkGlobeMapProjection::AlbersEqualArea, "GDA94 / Australian Albers");
-  ExpectLikePROJ(6931, vtkGlobeMapProjection::LambertAzimuthalEqualArea, "EASE-Grid 2.0 North");
-  ExpectLikePROJ(6932, vtkGlobeMapProjection::LambertAzimuthalEqualArea, "EASE-Grid 2.0 South");
-  ExpectLikePROJ(6933, vtkGlobeMapProjection::CylindricalEqualArea, "EASE-Grid 2.0 Global");
-  ExpectLikePROJ(25832, vtkGlobeMapProjection::TransverseMercator, "ETRS89 / UTM zone 32N");
-  ExpectLikePROJ(2193, vtkGlobeMapProjection::TransverseMercator, "NZGD2000 / NZTM 2000");
-  ExpectLikePROJ(3347, vtkGlobeMapProjection::LambertConformalConic, "NAD83 / Statistics Canada Lambert");
+  // The table's own codes, then codes from PROJ's database.
+  struct Code
+  {
+    int EPSG;
+    int Kind;
+    const char* Name;
+  };
+  const Code againstPROJ[] = {
+    { 4087, vtkGlobeMapProjection::Equirectangular, "WGS 84 / World Equidistant Cylindrical" },
+    { 3395, vtkGlobeMapProjection::Mercator, "WGS 84 / World Mercator" },
+    { 3857, vtkGlobeMapProjection::WebMercator, "WGS 84 / Pseudo-Mercator" },
+    { 3413, vtkGlobeMapProjection::PolarStereographic, "NSIDC Sea Ice Polar Stereographic North" },
+    { 3031, vtkGlobeMapProjection::PolarStereographic, "Antarctic Polar Stereographic" },
+    { 32661, vtkGlobeMapProjection::PolarStereographic, "UPS North" },
+    { 32631, vtkGlobeMapProjection::TransverseMercator, "UTM zone 31N" },
+    { 32760, vtkGlobeMapProjection::TransverseMercator, "UTM zone 60S" },
+    { 2154, vtkGlobeMapProjection::LambertConformalConic, "RGF93 / Lambert-93" },
+    { 3034, vtkGlobeMapProjection::LambertConformalConic, "ETRS89 / LCC Europe" },
+    { 3112, vtkGlobeMapProjection::LambertConformalConic, "GDA94 / Geoscience Australia Lambert" },
+    { 5070, vtkGlobeMapProjection::AlbersEqualArea, "NAD83 / Conus Albers" },
+    { 3577, vtkGlobeMapProjection::AlbersEqualArea, "GDA94 / Australian Albers" },
+    { 6931, vtkGlobeMapProjection::LambertAzimuthalEqualArea, "EASE-Grid 2.0 North" },
+    { 6932, vtkGlobeMapProjection::LambertAzimuthalEqualArea, "EASE-Grid 2.0 South" },
+    { 6933, vtkGlobeMapProjection::CylindricalEqualArea, "EASE-Grid 2.0 Global" },
+    { 25832, vtkGlobeMapProjection::TransverseMercator, "ETRS89 / UTM zone 32N" },
+    { 2193, vtkGlobeMapProjection::TransverseMercator, "NZGD2000 / NZTM 2000" },
+    { 3347, vtkGlobeMapProjection::LambertConformalConic, "NAD83 / Statistics Canada Lambert" },
+  };
+  std::printf("The table's codes, then codes from PROJ's database, against PROJ:\n");
+  for (const Code& c : againstPROJ)
+  {
+    ExpectLikePROJ(c.EPSG, c.Kind, c.Name);
+  }
   for (int code : { 27700, 3035, 2056 })
   {
     vtkNew<vtkGlobeMapProjection> q;

@@ -405,21 +405,37 @@ vec2 globe_projectEquirectangular(float lonHi, float lonLo, float latHi, float l
   return globe_projectionTexture(dLon, dLat, p2, p3);
 }
 
-// The start the conformal projections share: false outside the projection's domain; else the
-// (lon, lat) offsets from the reference, sin and cos of the latitude and the difference of its
-// sine from the reference's, with latitudes mirrored by hemi (-1: a south polar aspect).
-bool globe_conformalStart(float lonHi, float lonLo, float latHi, float latLo, float hemi,
-  vec4 p0, vec4 p1, vec4 p4, GLOBE_OUT(float) dLon, GLOBE_OUT(float) dLat,
-  GLOBE_OUT(float) sinLat, GLOBE_OUT(float) cosLat, GLOBE_OUT(float) dSin)
+// What the projections but equirectangular start from: Inside false outside the projection's
+// domain; else the (lon, lat) offsets from the reference, sin and cos of the latitude and the
+// difference of its sine from the reference's, with latitudes mirrored by hemi (-1: a south
+// polar aspect).
+struct GlobeProjectionStart
 {
-  if (!globe_projectionInDomain(lonHi + lonLo, latHi + latLo, p4))
+  bool Inside;
+  float DLon;
+  float DLat;
+  float SinLat;
+  float CosLat;
+  float DSin;
+};
+
+GlobeProjectionStart globe_conformalStart(float lonHi, float lonLo, float latHi, float latLo,
+  float hemi, vec4 p0, vec4 p1, vec4 p4)
+{
+  GlobeProjectionStart s;
+  s.Inside = globe_projectionInDomain(lonHi + lonLo, latHi + latLo, p4);
+  s.DLon = 0.0f;
+  s.DLat = 0.0f;
+  s.SinLat = 0.0f;
+  s.CosLat = 0.0f;
+  s.DSin = 0.0f;
+  if (s.Inside)
   {
-    return false;
+    globe_projectionDelta(lonHi, lonLo, hemi * latHi, hemi * latLo, p0, p1, s.DLon, s.DLat);
+    globe_latitudeSinCos(hemi * latHi, hemi * latLo, s.SinLat, s.CosLat);
+    s.DSin = globe_sineDifference(s.DLat, p1);
   }
-  globe_projectionDelta(lonHi, lonLo, hemi * latHi, hemi * latLo, p0, p1, dLon, dLat);
-  globe_latitudeSinCos(hemi * latHi, hemi * latLo, sinLat, cosLat);
-  dSin = globe_sineDifference(dLat, p1);
-  return true;
+  return s;
 }
 
 // Mercator on the ellipsoid (e = p2.z) and Web Mercator (e = 0: spherical formulas on the
@@ -427,18 +443,13 @@ bool globe_conformalStart(float lonHi, float lonLo, float latHi, float latLo, fl
 vec2 globe_projectMercator(float lonHi, float lonLo, float latHi, float latLo, vec4 p0, vec4 p1,
   vec4 p2, vec4 p3, vec4 p4, vec4 p5, vec4 p6)
 {
-  float dLon = 0.0f;
-  float dLat = 0.0f;
-  float sinLat = 0.0f;
-  float cosLat = 0.0f;
-  float dSin = 0.0f;
-  if (!globe_conformalStart(lonHi, lonLo, latHi, latLo, 1.0f, p0, p1, p4, dLon, dLat, sinLat,
-        cosLat, dSin))
+  GlobeProjectionStart s = globe_conformalStart(lonHi, lonLo, latHi, latLo, 1.0f, p0, p1, p4);
+  if (!s.Inside)
   {
     return vec2(-1.0f, -1.0f);
   }
-  float dPsi = globe_isometricLatitudeDifference(dSin, sinLat, cosLat, p1.z, p1.w, p2.z);
-  return globe_projectionTexture(dLon, dPsi, p2, p3);
+  float dPsi = globe_isometricLatitudeDifference(s.DSin, s.SinLat, s.CosLat, p1.z, p1.w, p2.z);
+  return globe_projectionTexture(s.DLon, dPsi, p2, p3);
 }
 
 // The projections with an apex (polar stereographic, the conics, polar Lambert azimuthal
@@ -479,31 +490,26 @@ vec2 globe_conformalApex(float lonHi, float lonLo, float latHi, float latLo, flo
   vec4 p0, vec4 p1, vec4 p2, vec4 p3, vec4 p4, vec4 p5, vec4 p6)
 {
   float e = p2.z;
-  float dLon = 0.0f;
-  float dLat = 0.0f;
-  float sinLat = 0.0f;
-  float cosLat = 0.0f;
-  float dSin = 0.0f;
-  if (!globe_conformalStart(lonHi, lonLo, latHi, latLo, p2.w, p0, p1, p4, dLon, dLat, sinLat,
-        cosLat, dSin))
+  GlobeProjectionStart s = globe_conformalStart(lonHi, lonLo, latHi, latLo, p2.w, p0, p1, p4);
+  if (!s.Inside)
   {
     return vec2(-1.0f, -1.0f);
   }
   float ratio = 0.0f;
   float ratioM1 = 0.0f;
-  if (abs(dSin) < 0.25f * cosLat * p1.w)
+  if (abs(s.DSin) < 0.25f * s.CosLat * p1.w)
   {
-    float dPsi = globe_isometricLatitudeDifference(dSin, sinLat, cosLat, p1.z, p1.w, e);
+    float dPsi = globe_isometricLatitudeDifference(s.DSin, s.SinLat, s.CosLat, p1.z, p1.w, e);
     ratioM1 = globe_expm1(-n * dPsi);
     ratio = 1.0f + ratioM1;
   }
   else
   {
-    float t = cosLat / (1.0f + sinLat) * globe_exp(e * globe_atanh(e * sinLat));
+    float t = s.CosLat / (1.0f + s.SinLat) * globe_exp(e * globe_atanh(e * s.SinLat));
     ratio = n == 1.0f ? t / p5.x : (t > 0.0f ? globe_exp(n * globe_log(t / p5.x)) : 0.0f);
     ratioM1 = ratio - 1.0f;
   }
-  float dTheta = n * (cut ? globe_conicLongitudeDelta(dLon, p6.x) : dLon);
+  float dTheta = n * (cut ? globe_conicLongitudeDelta(s.DLon, p6.x) : s.DLon);
   return globe_azimuthalOffset(ratio, ratioM1, dTheta, p2, p3);
 }
 
@@ -530,17 +536,12 @@ vec2 globe_projectConformalConic(float lonHi, float lonLo, float latHi, float la
 vec2 globe_projectAlbersEqualArea(float lonHi, float lonLo, float latHi, float latLo, vec4 p0,
   vec4 p1, vec4 p2, vec4 p3, vec4 p4, vec4 p5, vec4 p6)
 {
-  float dLon = 0.0f;
-  float dLat = 0.0f;
-  float sinLat = 0.0f;
-  float cosLat = 0.0f;
-  float dSin = 0.0f;
-  if (!globe_conformalStart(lonHi, lonLo, latHi, latLo, p2.w, p0, p1, p4, dLon, dLat, sinLat,
-        cosLat, dSin))
+  GlobeProjectionStart s = globe_conformalStart(lonHi, lonLo, latHi, latLo, p2.w, p0, p1, p4);
+  if (!s.Inside)
   {
     return vec2(-1.0f, -1.0f);
   }
-  float u = p5.x * globe_equalAreaDifference(dSin, sinLat, p1.z, p2.z);
+  float u = p5.x * globe_equalAreaDifference(s.DSin, s.SinLat, p1.z, p2.z);
   float root = 0.0f;
   float ratioM1 = 0.0f;
   if (p6.y > 0.0f && u < -0.5f)
@@ -548,7 +549,8 @@ vec2 globe_projectAlbersEqualArea(float lonHi, float lonLo, float latHi, float l
     // Towards the azimuthal projection's centre rho -> 0 and 1 + u cancels: E^2 =
     // (q_p - q) / (q_p - q_r) with q_p - q from 1 - sin lat = cos^2 / (1 + sin), relatively
     // accurate up to the pole (p6.y = (1 - e^2) / (q_p - q_r)).
-    float toPole = globe_equalAreaDifference(cosLat * cosLat / (1.0f + sinLat), 1.0f, sinLat, p2.z);
+    float toPole =
+      globe_equalAreaDifference(s.CosLat * s.CosLat / (1.0f + s.SinLat), 1.0f, s.SinLat, p2.z);
     root = sqrt(toPole * p6.y);
     ratioM1 = root - 1.0f;
   }
@@ -557,7 +559,7 @@ vec2 globe_projectAlbersEqualArea(float lonHi, float lonLo, float latHi, float l
     root = sqrt(max(1.0f + u, 0.0f));
     ratioM1 = u / (root + 1.0f);
   }
-  float dTheta = p5.y < 1.0f ? p5.y * globe_conicLongitudeDelta(dLon, p6.x) : dLon;
+  float dTheta = p5.y < 1.0f ? p5.y * globe_conicLongitudeDelta(s.DLon, p6.x) : s.DLon;
   return globe_azimuthalOffset(root, ratioM1, dTheta, p2, p3);
 }
 
@@ -565,18 +567,13 @@ vec2 globe_projectAlbersEqualArea(float lonHi, float lonLo, float latHi, float l
 vec2 globe_projectCylindricalEqualArea(float lonHi, float lonLo, float latHi, float latLo,
   vec4 p0, vec4 p1, vec4 p2, vec4 p3, vec4 p4, vec4 p5, vec4 p6)
 {
-  float dLon = 0.0f;
-  float dLat = 0.0f;
-  float sinLat = 0.0f;
-  float cosLat = 0.0f;
-  float dSin = 0.0f;
-  if (!globe_conformalStart(lonHi, lonLo, latHi, latLo, 1.0f, p0, p1, p4, dLon, dLat, sinLat,
-        cosLat, dSin))
+  GlobeProjectionStart s = globe_conformalStart(lonHi, lonLo, latHi, latLo, 1.0f, p0, p1, p4);
+  if (!s.Inside)
   {
     return vec2(-1.0f, -1.0f);
   }
   return globe_projectionTexture(
-    dLon, globe_equalAreaDifference(dSin, sinLat, p1.z, p2.z), p2, p3);
+    s.DLon, globe_equalAreaDifference(s.DSin, s.SinLat, p1.z, p2.z), p2, p3);
 }
 
 // Transverse Mercator (UTM): Krueger's series to alpha_2 on the conformal sphere's
@@ -584,18 +581,14 @@ vec2 globe_projectCylindricalEqualArea(float lonHi, float lonLo, float latHi, fl
 vec2 globe_projectTransverseMercator(float lonHi, float lonLo, float latHi, float latLo,
   vec4 p0, vec4 p1, vec4 p2, vec4 p3, vec4 p4, vec4 p5, vec4 p6)
 {
-  float dLon = 0.0f;
-  float dLat = 0.0f;
-  float sinLat = 0.0f;
-  float cosLat = 0.0f;
-  float dSin = 0.0f;
-  if (!globe_conformalStart(lonHi, lonLo, latHi, latLo, 1.0f, p0, p1, p4, dLon, dLat, sinLat,
-        cosLat, dSin))
+  GlobeProjectionStart s = globe_conformalStart(lonHi, lonLo, latHi, latLo, 1.0f, p0, p1, p4);
+  if (!s.Inside)
   {
     return vec2(-1.0f, -1.0f);
   }
-  float hx = 0.5f * globe_isometricLatitudeDifference(dSin, sinLat, cosLat, p1.z, p1.w, p2.z);
-  float hy = 0.5f * dLon;
+  float hx =
+    0.5f * globe_isometricLatitudeDifference(s.DSin, s.SinLat, s.CosLat, p1.z, p1.w, p2.z);
+  float hy = 0.5f * s.DLon;
   // Z = sinh(dw/2) / cosh(w_r + dw/2); dzeta' = 2 atan(Z).
   float sy = 0.0f;
   float cy = 0.0f;
