@@ -22,6 +22,7 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
@@ -486,6 +487,10 @@ public:
 
   // Results.
   vtkSmartPointer<vtkDataArray> Data;
+  // GetLevelData's pyramid (level 0 is Data) and the data it was made from.
+  std::vector<vtkSmartPointer<vtkDataArray>> Levels;
+  vtkDataArray* LevelsOf = nullptr;
+  vtkMTimeType LevelsTime = 0;
   double Extent[4] = { NaN, NaN, NaN, NaN };
   double Origin[2] = { NaN, NaN };
   double PixelSize[2] = { NaN, NaN };
@@ -731,6 +736,173 @@ vtkDataArray* vtkGlobeLayer::GetData()
   return this->Valid ? this->Internals->Data.Get() : nullptr;
 }
 
+//------------------------------------------------------------------------------------------
+namespace
+{
+/// The texels of a finer level (m of them) that texel i of a coarser one (n) covers, with the
+/// length of each overlap in finer texels: the area-weighted box filter along one axis.
+struct Tap
+{
+  int Index;
+  double Weight;
+};
+
+std::vector<std::vector<Tap>> Taps(int m, int n)
+{
+  std::vector<std::vector<Tap>> taps(n);
+  const double r = static_cast<double>(m) / n;
+  for (int i = 0; i < n; ++i)
+  {
+    const double a = i * r, b = (i + 1) * r;
+    for (int k = static_cast<int>(std::floor(a)); k < m && k < b; ++k)
+    {
+      const double w = std::min(b, k + 1.0) - std::max(a, static_cast<double>(k));
+      if (w > 1e-9)
+      {
+        taps[i].push_back({ k, w });
+      }
+    }
+  }
+  return taps;
+}
+
+/// The next level (nw x nh) of a level (w x h, row 0 north): float heights with voids left
+/// out of the means, or unsigned char components averaged as OpenGL's mipmaps and the
+/// streamed pages' levels (vtkGlobePageSource) average them.
+vtkSmartPointer<vtkDataArray> Reduce(vtkDataArray* in, int w, int h, int nw, int nh)
+{
+  const std::vector<std::vector<Tap>> tx = Taps(w, nw), ty = Taps(h, nh);
+  if (auto* heights = vtkFloatArray::SafeDownCast(in))
+  {
+    auto out = vtkSmartPointer<vtkFloatArray>::New();
+    out->SetNumberOfValues(static_cast<vtkIdType>(nw) * nh);
+    const float* v = heights->GetPointer(0);
+    float* o = out->GetPointer(0);
+    vtkSMPTools::For(0, nh, [&](int begin, int end) {
+      for (int j = begin; j < end; ++j)
+      {
+        for (int i = 0; i < nw; ++i)
+        {
+          double sum = 0.0, weight = 0.0;
+          for (const Tap& y : ty[j])
+          {
+            const float* row = v + static_cast<size_t>(y.Index) * w;
+            for (const Tap& x : tx[i])
+            {
+              const float value = row[x.Index];
+              if (!std::isnan(value))
+              {
+                sum += y.Weight * x.Weight * value;
+                weight += y.Weight * x.Weight;
+              }
+            }
+          }
+          o[static_cast<size_t>(j) * nw + i] =
+            weight > 0.0 ? static_cast<float>(sum / weight) : std::numeric_limits<float>::quiet_NaN();
+        }
+      }
+    });
+    return out;
+  }
+  auto* colors = vtkUnsignedCharArray::SafeDownCast(in);
+  if (!colors)
+  {
+    return nullptr;
+  }
+  const int nc = colors->GetNumberOfComponents();
+  auto out = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  out->SetNumberOfComponents(nc);
+  out->SetNumberOfTuples(static_cast<vtkIdType>(nw) * nh);
+  const unsigned char* v = colors->GetPointer(0);
+  unsigned char* o = out->GetPointer(0);
+  vtkSMPTools::For(0, nh, [&](int begin, int end) {
+    std::vector<double> sum(nc);
+    for (int j = begin; j < end; ++j)
+    {
+      for (int i = 0; i < nw; ++i)
+      {
+        std::fill(sum.begin(), sum.end(), 0.0);
+        double weight = 0.0;
+        for (const Tap& y : ty[j])
+        {
+          for (const Tap& x : tx[i])
+          {
+            const double k = y.Weight * x.Weight;
+            const unsigned char* t = v + (static_cast<size_t>(y.Index) * w + x.Index) * nc;
+            for (int c = 0; c < nc; ++c)
+            {
+              sum[c] += k * t[c];
+            }
+            weight += k;
+          }
+        }
+        unsigned char* t = o + (static_cast<size_t>(j) * nw + i) * nc;
+        for (int c = 0; c < nc; ++c)
+        {
+          t[c] = static_cast<unsigned char>(std::min(255.0, std::floor(sum[c] / weight + 0.5)));
+        }
+      }
+    }
+  });
+  return out;
+}
+} // namespace
+
+int vtkGlobeLayer::GetNumberOfLevels()
+{
+  if (!this->GetData() || this->Internals->Streamed)
+  {
+    return 0;
+  }
+  int levels = 1;
+  while ((std::max(this->RasterWidth, this->RasterHeight) >> levels) > 0)
+  {
+    ++levels;
+  }
+  return levels;
+}
+
+void vtkGlobeLayer::GetLevelDimensions(int level, int dimensions[2])
+{
+  dimensions[0] = dimensions[1] = 0;
+  if (level >= 0 && level < this->GetNumberOfLevels())
+  {
+    dimensions[0] = std::max(1, this->RasterWidth >> level);
+    dimensions[1] = std::max(1, this->RasterHeight >> level);
+  }
+}
+
+vtkDataArray* vtkGlobeLayer::GetLevelData(int level)
+{
+  vtkInternals& in = *this->Internals;
+  const int levels = this->GetNumberOfLevels();
+  if (level < 0 || level >= levels)
+  {
+    return nullptr;
+  }
+  vtkDataArray* data = in.Data;
+  if (in.LevelsOf != data || in.LevelsTime != data->GetMTime())
+  {
+    in.Levels.assign(1, data);
+    in.LevelsOf = data;
+    in.LevelsTime = data->GetMTime();
+  }
+  while (static_cast<int>(in.Levels.size()) <= level)
+  {
+    const int l = static_cast<int>(in.Levels.size());
+    int from[2], to[2];
+    this->GetLevelDimensions(l - 1, from);
+    this->GetLevelDimensions(l, to);
+    vtkSmartPointer<vtkDataArray> next = Reduce(in.Levels.back(), from[0], from[1], to[0], to[1]);
+    if (!next)
+    {
+      return nullptr;
+    }
+    in.Levels.push_back(next);
+  }
+  return in.Levels[level];
+}
+
 void vtkGlobeLayer::GetGeographicExtent(double extent[4])
 {
   const bool geographic = this->Valid && this->ModelType == Geographic;
@@ -816,6 +988,8 @@ void vtkGlobeLayer::Invalidate()
   vtkInternals& in = *this->Internals;
   this->Valid = false;
   in.Data = nullptr;
+  in.Levels.clear();
+  in.LevelsOf = nullptr;
   in.Streamed = false;
   in.Global = false;
   this->ReprojectedFromEPSG = 0;

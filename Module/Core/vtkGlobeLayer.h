@@ -475,6 +475,23 @@ public:
    */
   vtkDataArray* GetData();
 
+  ///@{
+  /**
+   * The MIP pyramid of the loaded data, as the renderer uploads and filters it
+   * (Documentation/composition.md "Filtering to the footprint"): level 0 is GetData(); level
+   * l is max(1, floor(columns / 2^l)) x max(1, floor(rows / 2^l)), as OpenGL sizes a mipmap,
+   * each texel the mean of the finer level over the texel's own area (an area-weighted box
+   * filter, so that every level registers exactly with OpenGL's texture coordinates, odd
+   * sizes included). Height means leave voids (NaN) out (a texel is a void only where all it
+   * covers is); colour means weight by alpha. Levels are computed on first use and kept
+   * until the data change (a third more memory). nullptr for an invalid or streamed layer
+   * (its pyramid is its page source's) or a level out of range.
+   */
+  int GetNumberOfLevels();
+  vtkDataArray* GetLevelData(int level);
+  void GetLevelDimensions(int level, int dimensions[2]);
+  ///@}
+
   /// Voids: posts (pixels, for Color) that were nodata or NaN, before any fill.
   vtkGetMacro(NumberOfVoids, vtkIdType);
 

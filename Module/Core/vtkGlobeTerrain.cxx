@@ -34,6 +34,7 @@ struct Composed
   const float* Values = nullptr; // whole layers
   bool Streamed = false;
   int PageSize = 0, PageBorder = 0;
+  int Levels = 1; // of the layer's pyramid (vtkGlobeLayer::GetLevelData or its pages)
 };
 
 constexpr double Degree = 3.14159265358979323846 / 180.0;
@@ -46,8 +47,8 @@ struct vtkGlobeTerrain::vtkInternals
   std::vector<Composed> Order;
   std::vector<std::tuple<vtkGlobeLayer*, vtkMTimeType, int>> Stamp;
   vtkMTimeType Built = 0;
-  // Level-0 pages of streamed layers read so far: (layer, column, row) -> values.
-  std::map<std::tuple<vtkGlobeLayer*, int, int>, vtkSmartPointer<vtkFloatArray>> Pages;
+  // Pages of streamed layers read so far: (layer, level, column, row) -> values.
+  std::map<std::tuple<vtkGlobeLayer*, int, int, int>, vtkSmartPointer<vtkFloatArray>> Pages;
 
   bool Stale(vtkGlobeTerrain* self)
   {
@@ -146,6 +147,7 @@ struct vtkGlobeTerrain::vtkInternals
         }
         c.PageSize = source->GetPageSize();
         c.PageBorder = source->GetBorder();
+        c.Levels = std::max(1, source->GetNumberOfLevels());
       }
       else
       {
@@ -155,6 +157,7 @@ struct vtkGlobeTerrain::vtkInternals
           continue;
         }
         c.Values = values->GetPointer(0);
+        c.Levels = std::max(1, layer->GetNumberOfLevels());
       }
       this->Order.push_back(c);
     }
@@ -166,17 +169,45 @@ struct vtkGlobeTerrain::vtkInternals
     this->Built = self->GetMTime();
   }
 
-  /// A post of a layer (column i east, row j south of the north edge), clamped or wrapped.
-  double Post(const Composed& c, int i, int j)
+  /// A layer's size in texels at a level: whole layers as OpenGL sizes mipmaps, streamed ones
+  /// as their page source.
+  static void LevelSize(const Composed& c, int level, int& w, int& h)
   {
-    i = c.Wraps ? ((i % c.Width) + c.Width) % c.Width : std::max(0, std::min(i, c.Width - 1));
-    j = std::max(0, std::min(j, c.Height - 1));
+    w = c.Width;
+    h = c.Height;
+    if (level > 0)
+    {
+      if (c.Streamed)
+      {
+        int size[2] = { 1, 1 };
+        c.Layer->GetPageSource()->GetLevelSize(level, size);
+        w = size[0];
+        h = size[1];
+      }
+      else
+      {
+        w = std::max(1, c.Width >> level);
+        h = std::max(1, c.Height >> level);
+      }
+    }
+  }
+
+  /// A post of a layer's level (column i east, row j south of the north edge), clamped or
+  /// wrapped.
+  double Post(const Composed& c, int level, int i, int j)
+  {
+    int w, h;
+    LevelSize(c, level, w, h);
+    i = c.Wraps ? ((i % w) + w) % w : std::max(0, std::min(i, w - 1));
+    j = std::max(0, std::min(j, h - 1));
     if (!c.Streamed)
     {
-      return c.Values[static_cast<size_t>(j) * c.Width + i];
+      const float* values = level == 0 ? c.Values
+        : static_cast<vtkFloatArray*>(c.Layer->GetLevelData(level))->GetPointer(0);
+      return values[static_cast<size_t>(j) * w + i];
     }
     const int column = i / c.PageSize, row = j / c.PageSize;
-    auto key = std::make_tuple(c.Layer, column, row);
+    auto key = std::make_tuple(c.Layer, level, column, row);
     auto found = this->Pages.find(key);
     if (found == this->Pages.end())
     {
@@ -185,7 +216,7 @@ struct vtkGlobeTerrain::vtkInternals
         this->Pages.clear(); // bounded memory: start over
       }
       auto page = vtkSmartPointer<vtkFloatArray>::New();
-      if (!c.Layer->ReadPage(0, column, row, page))
+      if (!c.Layer->ReadPage(level, column, row, page))
       {
         page = nullptr;
       }
@@ -224,23 +255,105 @@ struct vtkGlobeTerrain::vtkInternals
     return std::isfinite(u) && std::isfinite(v);
   }
 
-  /// The filtered value at (u, v) as the GPU samples level 0.
-  double Sample(const Composed& c, double u, double v, bool nearest)
+  /// The bilinear value of a level at (u, v) (the texel itself for Nearest). Whole layers'
+  /// levels span [0, 1] as OpenGL's mipmaps; a streamed level's texel is 2^level of level 0's.
+  double SampleLevel(const Composed& c, int level, double u, double v, bool nearest)
   {
-    const double x = u * c.Width, y = v * c.Height;
+    double x, y;
+    if (c.Streamed)
+    {
+      x = std::ldexp(u * c.Width, -level);
+      y = std::ldexp(v * c.Height, -level);
+    }
+    else
+    {
+      int w, h;
+      LevelSize(c, level, w, h);
+      x = u * w;
+      y = v * h;
+    }
     if (nearest)
     {
-      return this->Post(c, static_cast<int>(std::floor(x)), static_cast<int>(std::floor(y)));
+      return this->Post(c, level, static_cast<int>(std::floor(x)), static_cast<int>(std::floor(y)));
     }
     const double fx0 = x - 0.5, fy0 = y - 0.5;
     const int i = static_cast<int>(std::floor(fx0)), j = static_cast<int>(std::floor(fy0));
     const double fx = fx0 - i, fy = fy0 - j;
-    return (1 - fy) * ((1 - fx) * this->Post(c, i, j) + fx * this->Post(c, i + 1, j)) +
-      fy * ((1 - fx) * this->Post(c, i, j + 1) + fx * this->Post(c, i + 1, j + 1));
+    return (1 - fy) * ((1 - fx) * this->Post(c, level, i, j) + fx * this->Post(c, level, i + 1, j)) +
+      fy * ((1 - fx) * this->Post(c, level, i, j + 1) + fx * this->Post(c, level, i + 1, j + 1));
+  }
+
+  /// The filtered value at (u, v) at level of detail `lod`, as the GPU samples it: between the
+  /// two levels around it (LINEAR_MIPMAP_LINEAR); Nearest: level 0's texel for whole layers
+  /// (their texture has no mipmap filter), the nearest level's for streamed ones.
+  double Sample(const Composed& c, double u, double v, bool nearest, double lod)
+  {
+    if (nearest)
+    {
+      return this->SampleLevel(c, c.Streamed ? static_cast<int>(std::floor(lod + 0.5)) : 0, u, v, true);
+    }
+    const int l = static_cast<int>(std::floor(lod));
+    const double f = lod - l;
+    const double a = this->SampleLevel(c, l, u, v, false);
+    return f > 0.0 ? a + (this->SampleLevel(c, l + 1, u, v, false) - a) * f : a;
+  }
+
+  /**
+   * The level of detail the GPU takes for a height layer where one step along each of two axes
+   * moves (lon, lat) by footprint (dlon, dlat per axis, degrees): globe_footprintLodHeights
+   * (vtkGlobeFootprint.glsl) from the texture coordinates' Jacobian, the polar rule included.
+   */
+  static double Lod(const Composed& c, double lon, double lat, double u, double v,
+    const double footprint[4], bool grid)
+  {
+    double jLon[2], jLat[2]; // texture coordinates per degree of lon and lat
+    if (c.Projection)
+    {
+      const double e = 1e-4 / Degree, eLat = lat > 0.0 ? -e : e;
+      double uE, vE, uN, vN;
+      if (!UV(c, lon + e, lat, uE, vE) || !UV(c, lon, lat + eLat, uN, vN))
+      {
+        return 0.0;
+      }
+      double du = uE - u, duN = uN - u;
+      if (c.Wraps)
+      {
+        du -= std::floor(du + 0.5);
+        duN -= std::floor(duN + 0.5);
+      }
+      jLon[0] = du / e;
+      jLon[1] = (vE - v) / e;
+      jLat[0] = duN / eLat;
+      jLat[1] = (vN - v) / eLat;
+    }
+    else
+    {
+      jLon[0] = 1.0 / (c.Extent[1] - c.Extent[0]);
+      jLon[1] = 0.0;
+      jLat[0] = 0.0;
+      jLat[1] = -1.0 / (c.Extent[3] - c.Extent[2]);
+    }
+    const double a[2] = { (jLon[0] * footprint[0] + jLat[0] * footprint[1]) * c.Width,
+      (jLon[1] * footprint[0] + jLat[1] * footprint[1]) * c.Height };
+    const double b[2] = { (jLon[0] * footprint[2] + jLat[0] * footprint[3]) * c.Width,
+      (jLon[1] * footprint[2] + jLat[1] * footprint[3]) * c.Height };
+    const double longer = std::max(std::hypot(a[0], a[1]), std::hypot(b[0], b[1]));
+    const double most = grid ? 1.0 / 16.0 : 1.0; // the grid pass's anisotropy (vtkGlobeLayerSet)
+    const double stretch = c.Projection ? most : std::min(most, 10.0 * std::cos(lat * Degree));
+    double rho = longer;
+    if (stretch < 1.0)
+    {
+      const double t = a[0] * a[0] + a[1] * a[1] + b[0] * b[0] + b[1] * b[1];
+      const double det = std::abs(a[0] * b[1] - a[1] * b[0]);
+      const double major = std::sqrt(0.5 * t + std::sqrt(std::max(0.25 * t * t - det * det, 0.0)));
+      rho = std::max(det / std::max(major, 1e-300), longer * stretch);
+    }
+    return std::min(std::max(std::log2(std::max(rho, 1e-300)), 0.0), c.Levels - 1.0);
   }
 
   /// One layer's value (ellipsoidal, m) and weight at (lon, lat).
-  void Evaluate(const Composed& c, double lon, double lat, double& value, double& weight)
+  void Evaluate(const Composed& c, double lon, double lat, const double* footprint, bool grid,
+    double& value, double& weight)
   {
     value = 0.0;
     weight = 0.0;
@@ -288,12 +401,13 @@ struct vtkGlobeTerrain::vtkInternals
       return;
     }
     const bool nearest = layer->GetInterpolation() == vtkGlobeLayer::Nearest;
-    const double h = this->Sample(c, u, v, nearest);
+    const double lod = footprint ? Lod(c, lon, lat, u, v, footprint, grid) : 0.0;
+    const double h = this->Sample(c, u, v, nearest, lod);
     // The GPU's gradient samples one texel away each way: a NaN there voids the sample too.
     const double du = 1.0 / c.Width, dv = 1.0 / c.Height;
-    const double neighbours = this->Sample(c, u + du, v, nearest) +
-      this->Sample(c, u - du, v, nearest) + this->Sample(c, u, v - dv, nearest) +
-      this->Sample(c, u, v + dv, nearest);
+    const double neighbours = this->Sample(c, u + du, v, nearest, lod) +
+      this->Sample(c, u - du, v, nearest, lod) + this->Sample(c, u, v - dv, nearest, lod) +
+      this->Sample(c, u, v + dv, nearest, lod);
     const double* valid = layer->GetValidRange();
     if (std::isnan(h) || std::isnan(neighbours) || !(h >= valid[0] && h <= valid[1]))
     {
@@ -386,6 +500,12 @@ void vtkGlobeTerrain::Update()
 //------------------------------------------------------------------------------
 double vtkGlobeTerrain::GetHeight(double lon, double lat)
 {
+  return this->GetFilteredHeight(lon, lat, nullptr);
+}
+
+double vtkGlobeTerrain::GetFilteredHeight(
+  double lon, double lat, const double footprint[4], int rule)
+{
   vtkInternals& in = *this->Internals;
   if (in.Stale(this))
   {
@@ -402,7 +522,7 @@ double vtkGlobeTerrain::GetHeight(double lon, double lat)
   {
     const Composed& c = in.Order[i];
     double value, w;
-    in.Evaluate(c, lon, lat, value, w);
+    in.Evaluate(c, lon, lat, footprint, rule != PixelFootprint, value, w);
     const int mode = c.Layer->GetBlendMode();
     switch (mode)
     {

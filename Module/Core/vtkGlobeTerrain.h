@@ -8,7 +8,8 @@
  * (Documentation/composition.md):
  * - the enabled, valid height layers in composition order (DrawOrder, ties as added); a
  *   layer whose geoid cannot be read is skipped as the renderer skips it;
- * - each layer's value where the GPU samples it at level 0: bilinear between texel centres
+ * - each layer's value where the GPU samples it at level 0 (GetFilteredHeight: at the level
+ *   a grid step's footprint needs): bilinear between texel centres
  *   (the texel itself with Interpolation Nearest), wrapped east-west for global layers,
  *   clamped at the edges; projected layers through vtkGlobeMapProjection (GeographicLib);
  *   streamed layers from their level-0 pages (vtkGlobeLayer::ReadPage);
@@ -83,6 +84,26 @@ public:
   /// The composed ellipsoidal height (m) at (lon, lat) in degrees; 0 without height layers
   /// and at latitudes beyond +-90 degrees (outside every layer); NaN for NaN input.
   double GetHeight(double lon, double lat);
+
+  /// Which of the renderer's level rules GetFilteredHeight follows.
+  enum FootprintRules
+  {
+    GridFootprint,  ///< the grid pass's: the shorter axis within 16:1
+    PixelFootprint ///< the screen passes' (normals, height colours): OpenGL's longer axis
+  };
+
+  /**
+   * The composed height as the renderer samples it where one step along each of two axes
+   * (the grid's, or the screen's for PixelFootprint) moves (lon, lat) by footprint = (dlon,
+   * dlat, dlon, dlat) degrees: each layer filtered to that footprint
+   * (Documentation/composition.md "Filtering to the footprint"), trilinearly between the two
+   * levels of its pyramid (vtkGlobeLayer::GetLevelData, or a streamed layer's pages) around
+   * the level the GPU takes, by the same rule (within 6 degrees of a pole the shorter axis
+   * takes over for geographic layers). A zero footprint gives GetHeight. The GPU evaluates the
+   * rule in float, so near a whole level its trilinear weight may differ by its 8-bit quantum.
+   */
+  double GetFilteredHeight(
+    double lon, double lat, const double footprint[4], int rule = GridFootprint);
 
   /**
    * The undulation N (m) of the vertical datum at (lon, lat): of the geoid set with SetGeoid,

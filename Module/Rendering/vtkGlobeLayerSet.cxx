@@ -9,6 +9,7 @@
 #include "vtkGlobeMapProjection.h"
 #include "vtkGlobePageCache.h"
 #include "vtkGlobePageSource.h"
+#include "vtkGlobeFootprint.h"
 #include "vtkGlobePages.h"
 #include "vtkDoubleArray.h"
 #include "vtkMath.h"
@@ -847,10 +848,32 @@ void vtkGlobeLayerSet::UploadTextures(vtkOpenGLRenderWindow* window, bool waitFo
     const bool height = layer->GetRole() == vtkGlobeLayer::Height;
     e.Texture->SetWrapS(e.Wraps ? vtkTextureObject::Repeat : vtkTextureObject::ClampToEdge);
     e.Texture->SetWrapT(vtkTextureObject::ClampToEdge);
-    e.Texture->Create2DFromRaw(
-      w, h, height ? 1 : 4, height ? VTK_FLOAT : VTK_UNSIGNED_CHAR, data->GetVoidPointer(0));
+    // The whole pyramid, made on the CPU as vtkGlobeTerrain samples it (voids left out of
+    // the means, which glGenerateMipmap would spread), so that every level is filtered to the
+    // footprint (Documentation/composition.md "Filtering to the footprint").
+    const int levels = std::max(1, layer->GetNumberOfLevels());
+    e.Texture->SetBaseLevel(0);
+    e.Texture->SetMaxLevel(levels - 1);
+    const int type = height ? VTK_FLOAT : VTK_UNSIGNED_CHAR, components = height ? 1 : 4;
+    e.Texture->Create2DFromRaw(w, h, components, type, data->GetVoidPointer(0));
     e.Texture->Bind();
-    glGenerateMipmap(GL_TEXTURE_2D);
+    const GLenum internal = e.Texture->GetInternalFormat(type, components, false);
+    const GLenum format = e.Texture->GetFormat(type, components, false);
+    const GLenum glType = e.Texture->GetDataType(type);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    for (int l = 1; l < levels; ++l)
+    {
+      vtkDataArray* level = layer->GetLevelData(l);
+      int size[2];
+      layer->GetLevelDimensions(l, size);
+      if (!level)
+      {
+        e.Texture->SetMaxLevel(l - 1);
+        break;
+      }
+      glTexImage2D(GL_TEXTURE_2D, l, internal, size[0], size[1], 0, format, glType,
+        level->GetVoidPointer(0));
+    }
     e.Texture->Deactivate();
     e.UploadedData = data;
     e.UploadedTime = data->GetMTime();
@@ -1151,6 +1174,12 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
   {
     s << "uniform sampler2DArray globePagesImages;\n";
   }
+  s << vtkGlobeFootprint;
+  // Heights' level of detail: OpenGL's (the longer axis) per pixel; on the grid the shorter
+  // axis within 16:1 (GLOBE_GRID_FOOTPRINT), since a grid step along the view is long where
+  // the grid meets the horizon, and the longer axis there levels distant peaks.
+  s << "#ifdef GLOBE_GRID_FOOTPRINT\nconst float globe_heightStretch = 1.0 / 16.0;\n#else\n"
+       "const float globe_heightStretch = 1.0;\n#endif\n";
   if (streamed[0] || streamed[1])
   {
     s << vtkGlobePages;
@@ -1381,8 +1410,43 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
       {
         s << "  vec2 uv" << i << " = " << UV(e, p, At(hp), hp) << ";\n";
       }
-      s << "  vec2 dx" << i << ", dy" << i << ";\n"
-        << "  globe_uvDerivatives(uv" << i << ", " << wraps << ", dx" << i << ", dy" << i << ");\n";
+      s << "  vec2 dx" << i << ", dy" << i << ";\n";
+      if (height)
+      {
+        // In the grid pass, from the grid step towards the nearer neighbour along each axis
+        // (globeGridFootprint, radians of lon and lat) through the layer's Jacobian: a grid
+        // point next to the horizon keeps the level of its own small triangles where screen
+        // derivatives would take that of the long step across the horizon.
+        s << "#ifdef GLOBE_GRID_FOOTPRINT\n";
+        if (e->Function.empty())
+        {
+          s << "  vec2 jLon" << i << " = vec2(1.0 / " << p << "Map.y, 0.0);\n"
+            << "  vec2 jLat" << i << " = vec2(0.0, -1.0 / " << p << "Map.w);\n";
+        }
+        else
+        {
+          const std::string lon = "jLon" + std::to_string(i), lat = "jLat" + std::to_string(i);
+          s << "  vec2 " << lon << " = " << UV(e, p, At(hp, "1e-4"), hp) << " - uv" << i << ";\n"
+            << "  vec2 " << lat << " = " << UV(e, p, At(hp, nullptr, "(lat > 0.0 ? -1e-4 : 1e-4)"), hp)
+            << " - uv" << i << ";\n";
+          if (e->Wraps)
+          {
+            s << "  " << lon << ".x -= floor(" << lon << ".x + 0.5);\n"
+              << "  " << lat << ".x -= floor(" << lat << ".x + 0.5);\n";
+          }
+          s << "  " << lon << " /= 1e-4;\n  " << lat << " /= lat > 0.0 ? -1e-4 : 1e-4;\n";
+        }
+        s << "  dx" << i << " = jLon" << i << " * globeGridFootprint.x + jLat" << i
+          << " * globeGridFootprint.y;\n"
+          << "  dy" << i << " = jLon" << i << " * globeGridFootprint.z + jLat" << i
+          << " * globeGridFootprint.w;\n"
+          << "#else\n";
+      }
+      s << "  globe_uvDerivatives(uv" << i << ", " << wraps << ", dx" << i << ", dy" << i << ");\n";
+      if (height)
+      {
+        s << "#endif\n";
+      }
     }
     for (size_t i = 0; i < list.size(); ++i)
     {
@@ -1414,18 +1478,21 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
           s << "    float v;\n    vec4 ewns;\n"
             << "    globe_pageHeights(globePagesHeights, " << p << "Table, " << p
             << "Pyramid, st" << n << ", dx, dy, "
-            << (e->Function.empty() ? "min(1.0, 10.0 * cosLat)" : "1.0") << ", "
+            << (e->Function.empty() ? "min(globe_heightStretch, 10.0 * cosLat)" : "globe_heightStretch") << ", "
             << (layer->GetInterpolation() == vtkGlobeLayer::Nearest ? "true" : "false")
             << ", v, ewns);\n"
             << "    float vE = ewns.x, vW = ewns.y, vN = ewns.z, vS = ewns.w;\n";
         }
         else
         {
-          s << "    float v = " << Sample(e, p, "uv") << ".r;\n"
-            << "    float vE = " << Sample(e, p, "uv + vec2(texel.x, 0.0)") << ".r;\n"
-            << "    float vW = " << Sample(e, p, "uv - vec2(texel.x, 0.0)") << ".r;\n"
-            << "    float vN = " << Sample(e, p, "uv - vec2(0.0, texel.y)") << ".r;\n"
-            << "    float vS = " << Sample(e, p, "uv + vec2(0.0, texel.y)") << ".r;\n";
+          // The streamed layers' level (the polar rule included), so both filter alike.
+          s << "    float lod = globe_footprintLodHeights(vec4(" << Size(e, p) << ", 64.0, 0.0), dx, dy, "
+            << (e->Function.empty() ? "min(globe_heightStretch, 10.0 * cosLat)" : "globe_heightStretch") << ");\n"
+            << "    float v = textureLod(" << p << ", uv, lod).r;\n"
+            << "    float vE = textureLod(" << p << ", uv + vec2(texel.x, 0.0), lod).r;\n"
+            << "    float vW = textureLod(" << p << ", uv - vec2(texel.x, 0.0), lod).r;\n"
+            << "    float vN = textureLod(" << p << ", uv - vec2(0.0, texel.y), lod).r;\n"
+            << "    float vS = textureLod(" << p << ", uv + vec2(0.0, texel.y), lod).r;\n";
         }
         if (e->Function.empty())
         {
@@ -1625,8 +1692,8 @@ void vtkGlobeLayerSet::RequestPages(vtkDoubleArray* footprints, int blockPixels,
           continue;
         }
         // The footprint's level as the shader chooses it: the longer screen axis
-        // (globe_pageLod); for geographic height layers within 6 degrees of a pole, down to
-        // the Jacobian's shorter axis (globe_pageLodHeights).
+        // (globe_footprintLod); for geographic height layers within 6 degrees of a pole, down to
+        // the Jacobian's shorter axis (globe_footprintLodHeights).
         const double ax = du[0] * W, ay = du[1] * H, bx = dv[0] * W, by = dv[1] * H;
         double rho = std::max(std::hypot(ax, ay), std::hypot(bx, by));
         const double stretch = std::min(1.0, 10.0 * std::cos(f[1]));

@@ -205,21 +205,16 @@ int TestGlobeEffects(int argc, char* argv[])
   }
   scene.Mapper->GraticuleOff();
 
-  // Contours every 1,000 m of the composed heights (the C++ mirror at each pixel's position).
+  // Contours every 1,000 m of the composed heights (the C++ mirror at each pixel's position,
+  // filtered to the pixel's footprint).
   composite->SetContourInterval(1000.0);
   scene.Mapper->ContoursOn();
   scene.Render();
   {
     const std::vector<unsigned char> lines = vtkGlobeTest::ReadPixels(scene.Window);
     const std::vector<vtkGlobeLayer*> all = vtkGlobeTest::HeightLayers(scene.Mapper);
-    std::vector<double> heights(llh.size(), NAN);
-    for (size_t i = 0; i < llh.size(); ++i)
-    {
-      if (!std::isnan(llh[i][0]))
-      {
-        heights[i] = vtkGlobeTest::ComposedHeight(all, llh[i][0], llh[i][1]);
-      }
-    }
+    // Contours come from the heights the screen pass filters to each pixel's footprint.
+    const std::vector<double> heights = vtkGlobeTest::PixelHeights(scene, all, llh);
     auto h = [&](int x, int y) {
       return (x < 0 || y < 0 || x >= size[0] || y >= size[1])
         ? static_cast<double>(NAN)

@@ -25,7 +25,7 @@ struct Comparison
 };
 
 // Each covered pixel whose neighbours are covered too (away from the limb) against `expected`
-// (0..1 RGB at the pixel's composed height); tolerance: 1.5/255 plus half the spread of the
+// (0..1 RGB at the pixel's composed height, filtered to its footprint); tolerance: 1.5/255 plus half the spread of the
 // expected colour over the pixel and its 4 neighbours' heights.
 template <typename Expected>
 Comparison Compare(vtkGlobeTest::Scene& scene, const std::vector<unsigned char>& rgb,
@@ -33,14 +33,8 @@ Comparison Compare(vtkGlobeTest::Scene& scene, const std::vector<unsigned char>&
 {
   const int* size = scene.Window->GetSize();
   const auto llh = vtkGlobeTest::GeodeticPixels(scene);
-  std::vector<double> height(llh.size(), NAN);
-  for (size_t i = 0; i < llh.size(); ++i)
-  {
-    if (!std::isnan(llh[i][0]))
-    {
-      height[i] = vtkGlobeTest::ComposedHeight(layers, llh[i][0], llh[i][1]);
-    }
-  }
+  // The heights the screen pass composes: filtered to each pixel's footprint.
+  const std::vector<double> height = vtkGlobeTest::PixelHeights(scene, layers, llh);
   Comparison c;
   std::vector<double> diffs;
   for (int y = 1; y + 1 < size[1]; ++y)

@@ -316,11 +316,11 @@ inline bool LayerUV(vtkGlobeLayer* layer, double lon, double lat, double& u, dou
 
 /// A layer's values read whole: its own, or for a streamed layer those of a twin that reads
 /// the same file whole with the same settings (the reference the streamed pictures meet).
-inline vtkDataArray* WholeData(vtkGlobeLayer* layer)
+inline vtkGlobeLayer* WholeLayer(vtkGlobeLayer* layer)
 {
   if (!layer->IsStreamed())
   {
-    return layer->GetData();
+    return layer;
   }
   // Keyed by what the twin reads, not by the layer's address (addresses are reused).
   const std::string key = std::string(layer->GetFileName()) + "|" + std::to_string(layer->GetRole()) +
@@ -341,33 +341,81 @@ inline vtkDataArray* WholeData(vtkGlobeLayer* layer)
     twin->SetStreamingToOff();
     twin->Update();
   }
-  return twin->GetData();
+  return twin;
+}
+
+inline vtkDataArray* WholeData(vtkGlobeLayer* layer)
+{
+  return WholeLayer(layer)->GetData();
 }
 
 /// One component of a layer's data at (lon, lat) in degrees as the GPU samples it at level 0:
 /// bilinear between texel centres, clamped at the edges, wrapped in longitude for global
 /// layers (raw values: metres, or 0..255 for images). Returns false outside the layer.
-inline bool SampleLayer(vtkGlobeLayer* layer, double lon, double lat, int component, double& value)
+/**
+ * A layer's component at (lon, lat) in degrees as the GPU samples its whole-raster texture:
+ * at level of detail `lod` trilinearly between the two levels around it
+ * (vtkGlobeLayer::GetLevelData, LINEAR_MIPMAP_LINEAR), bilinear within each; lod 0: level 0.
+ */
+inline bool SampleLayer(vtkGlobeLayer* layer, double lon, double lat, int component, double& value,
+  double lod = 0.0)
 {
   double u, v;
   if (!LayerUV(layer, lon, lat, u, v) || u < 0 || u > 1 || v < 0 || v > 1)
   {
     return false;
   }
-  const int w = layer->GetNumberOfColumns(), h = layer->GetNumberOfRows();
-  vtkDataArray* data = WholeData(layer);
+  vtkGlobeLayer* whole = WholeLayer(layer);
   const bool wrap = layer->IsGlobal();
-  auto at = [&](int i, int j) {
-    i = wrap ? ((i % w) + w) % w : std::max(0, std::min(i, w - 1));
-    j = std::max(0, std::min(j, h - 1));
-    return data->GetComponent(static_cast<vtkIdType>(j) * w + i, component);
+  auto level = [&](int l) {
+    int size[2];
+    whole->GetLevelDimensions(l, size);
+    const int w = size[0], h = size[1];
+    vtkDataArray* data = whole->GetLevelData(l);
+    auto at = [&](int i, int j) {
+      i = wrap ? ((i % w) + w) % w : std::max(0, std::min(i, w - 1));
+      j = std::max(0, std::min(j, h - 1));
+      return data->GetComponent(static_cast<vtkIdType>(j) * w + i, component);
+    };
+    const double x = u * w - 0.5, y = v * h - 0.5;
+    const int i = static_cast<int>(std::floor(x)), j = static_cast<int>(std::floor(y));
+    const double fx = x - i, fy = y - j;
+    return (1 - fy) * ((1 - fx) * at(i, j) + fx * at(i + 1, j)) +
+      fy * ((1 - fx) * at(i, j + 1) + fx * at(i + 1, j + 1));
   };
-  const double x = u * w - 0.5, y = v * h - 0.5;
-  const int i = static_cast<int>(std::floor(x)), j = static_cast<int>(std::floor(y));
-  const double fx = x - i, fy = y - j;
-  value = (1 - fy) * ((1 - fx) * at(i, j) + fx * at(i + 1, j)) +
-    fy * ((1 - fx) * at(i, j + 1) + fx * at(i + 1, j + 1));
+  lod = std::min(std::max(lod, 0.0), whole->GetNumberOfLevels() - 1.0);
+  const int l = static_cast<int>(std::floor(lod));
+  const double f = lod - l;
+  value = level(l);
+  if (f > 0.0)
+  {
+    value += (level(l + 1) - value) * f;
+  }
   return true;
+}
+
+/**
+ * The level of detail OpenGL takes for a layer at a pixel (textureGrad: log2 of the longer
+ * screen derivative in texels), from the geodetic positions (deg) of the pixel and of its
+ * neighbours one pixel right and one up.
+ */
+inline double PixelLod(vtkGlobeLayer* layer, const double here[2], const double right[2], const double up[2])
+{
+  double u, v, ur, vr, uu, vu;
+  if (!LayerUV(layer, here[0], here[1], u, v) || !LayerUV(layer, right[0], right[1], ur, vr) ||
+    !LayerUV(layer, up[0], up[1], uu, vu))
+  {
+    return 0.0;
+  }
+  const double w = layer->GetNumberOfColumns(), h = layer->GetNumberOfRows();
+  double dxu = ur - u, dyu = uu - u;
+  if (layer->IsGlobal())
+  {
+    dxu -= std::floor(dxu + 0.5);
+    dyu -= std::floor(dyu + 0.5);
+  }
+  const double rho = std::max(std::hypot(dxu * w, (vr - v) * h), std::hypot(dyu * w, (vu - v) * h));
+  return std::max(0.0, std::log2(std::max(rho, 1e-300)));
 }
 
 /// A height layer's value (m) at (lon, lat) in degrees as the GPU samples it at level 0.
@@ -498,7 +546,8 @@ inline double CoverageWeight(vtkGlobeLayer* layer, double lon, double lat)
 /// by coverage, feathered border and opacity, zero where its value is NaN or outside its valid
 /// range, blended by its mode, heights above a geoid made ellipsoidal). One terrain is kept for
 /// the last list of layers asked about.
-inline double ComposedHeight(const std::vector<vtkGlobeLayer*>& layers, double lon, double lat)
+inline double ComposedHeight(const std::vector<vtkGlobeLayer*>& layers, double lon, double lat,
+  const double* footprint = nullptr, int rule = vtkGlobeTerrain::GridFootprint)
 {
   static vtkSmartPointer<vtkGlobeTerrain> terrain = vtkSmartPointer<vtkGlobeTerrain>::New();
   bool same = terrain->GetNumberOfLayers() == static_cast<int>(layers.size());
@@ -514,7 +563,7 @@ inline double ComposedHeight(const std::vector<vtkGlobeLayer*>& layers, double l
       terrain->AddLayer(layer);
     }
   }
-  return terrain->GetHeight(lon, lat);
+  return footprint ? terrain->GetFilteredHeight(lon, lat, footprint, rule) : terrain->GetHeight(lon, lat);
 }
 
 /// Image layers derived from a global height layer, for the effects: a water mask (1 where the
@@ -572,8 +621,10 @@ struct TerrainCheck
 
 /**
  * The longest triangle edge (m) of the frame's PGM mesh covering each pixel: the grid of the
- * last frame rebuilt on the CPU (vtkGlobeProjectiveGrid, double, with the composed heights),
- * each triangle projected and its edge written over its screen bounding box. 0: uncovered.
+ * last frame rebuilt on the CPU (vtkGlobeProjectiveGrid, double, with the composed heights
+ * filtered as the grid pass filters them: to the step towards the nearer neighbour along each
+ * grid axis, vtkGlobeTerrain::GetFilteredHeight), each triangle projected and its edge written
+ * over its screen bounding box. 0: uncovered.
  */
 inline std::vector<double> MeshEdgeMap(Scene& scene)
 {
@@ -587,22 +638,65 @@ inline std::vector<double> MeshEdgeMap(Scene& scene)
   const double rp = grid->GetPrimaryRadius();
   std::vector<double> world(static_cast<size_t>(n) * n * 3), screen(static_cast<size_t>(n) * n * 2);
   std::vector<char> valid(static_cast<size_t>(n) * n, 0);
+  std::vector<std::array<double, 3>> sdirs(static_cast<size_t>(n) * n), ps(sdirs.size()), llhs(sdirs.size());
   for (int j = 0; j < n; ++j)
   {
     for (int i = 0; i < n; ++i)
     {
       const size_t k = static_cast<size_t>(j) * n + i;
-      double sdir[3], p[3];
-      if (!grid->ComputeGridPoint(static_cast<double>(i) / (n - 1), static_cast<double>(j) / (n - 1), sdir, p))
+      if (!grid->ComputeGridPoint(static_cast<double>(i) / (n - 1), static_cast<double>(j) / (n - 1),
+            sdirs[k].data(), ps[k].data()))
       {
         continue;
       }
+      const double* sdir = sdirs[k].data();
+      double surface[3] = { sdir[0] * radii[0], sdir[1] * radii[1], sdir[2] * radii[2] };
+      scene.Body->CartesianToGeodeticQuiet(surface, llhs[k].data());
+      valid[k] = 1;
+    }
+  }
+  // The grid step towards the nearer neighbour (on the ground) along one axis.
+  auto shorterStep = [&](int i, int j, int di, int dj, double step[2]) {
+    const size_t k = static_cast<size_t>(j) * n + i;
+    double best = 1e300;
+    step[0] = step[1] = 0.0;
+    for (int s = -1; s <= 1; s += 2)
+    {
+      const int a = i + s * di, b = j + s * dj;
+      if (a < 0 || b < 0 || a >= n || b >= n || !valid[static_cast<size_t>(b) * n + a])
+      {
+        continue;
+      }
+      const double* o = llhs[static_cast<size_t>(b) * n + a].data();
+      double dLon = o[0] - llhs[k][0];
+      dLon -= 360.0 * std::floor(dLon / 360.0 + 0.5);
+      const double dLat = o[1] - llhs[k][1];
+      const double l = std::hypot(dLon * std::cos(llhs[k][1] * 3.14159265358979 / 180.0), dLat);
+      if (l < best)
+      {
+        best = l;
+        step[0] = dLon;
+        step[1] = dLat;
+      }
+    }
+  };
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const size_t k = static_cast<size_t>(j) * n + i;
+      if (!valid[k])
+      {
+        continue;
+      }
+      const double* sdir = sdirs[k].data();
+      const double* p = ps[k].data();
       double normal[3] = { sdir[0] / radii[0], sdir[1] / radii[1], sdir[2] / radii[2] };
       const double nn = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
-      double llh[3];
-      double surface[3] = { sdir[0] * radii[0], sdir[1] * radii[1], sdir[2] * radii[2] };
-      scene.Body->CartesianToGeodeticQuiet(surface, llh);
-      const double h = ComposedHeight(layers, llh[0], llh[1]);
+      double footprint[4];
+      shorterStep(i, j, 1, 0, footprint);
+      shorterStep(i, j, 0, 1, footprint + 2);
+      const double h = ComposedHeight(layers, llhs[k][0], llhs[k][1], footprint);
       double* w = &world[3 * k];
       for (int c = 0; c < 3; ++c)
       {
@@ -613,7 +707,6 @@ inline std::vector<double> MeshEdgeMap(Scene& scene)
       const double* d = scene.Renderer->GetDisplayPoint();
       screen[2 * k] = d[0];
       screen[2 * k + 1] = d[1];
-      valid[k] = 1;
     }
   }
   auto edge = [&](size_t a, size_t b) {
@@ -870,6 +963,66 @@ inline void GBufferPoint(Scene& scene, const float texel[4], bool withHeight, do
     llh[2] = texel[3];
     scene.Body->GeodeticToCartesianQuiet(llh, point);
   }
+}
+
+/**
+ * The composed height at each pixel of GeodeticPixels' positions as the screen passes filter
+ * it (vtkGlobeTerrain::PixelFootprint), with the footprint as the GPU's derivatives take it:
+ * per 2 x 2 quad, from its lower-left pixel to the next one right and up (coarse derivatives);
+ * where one of those is not covered, from the pixel's own neighbours. NaN where nothing is
+ * drawn.
+ */
+inline std::vector<double> PixelHeights(Scene& scene, const std::vector<vtkGlobeLayer*>& layers,
+  const std::vector<std::array<double, 3>>& llh)
+{
+  const int* size = scene.Window->GetSize();
+  std::vector<double> heights(llh.size(), NAN);
+  auto covered = [&](int x, int y) {
+    return x >= 0 && y >= 0 && x < size[0] && y < size[1] &&
+      !std::isnan(llh[static_cast<size_t>(y) * size[0] + x][0]);
+  };
+  // The change of (lon, lat) from pixel (x, y) to (x + dx, y + dy), per pixel of the step.
+  auto change = [&](int x, int y, int dx, int dy, double d[2]) {
+    const auto& a = llh[static_cast<size_t>(y) * size[0] + x];
+    const auto& b = llh[static_cast<size_t>(y + dy) * size[0] + x + dx];
+    const int n = dx + dy;
+    d[0] = (b[0] - a[0]) - 360.0 * std::floor((b[0] - a[0]) / 360.0 + 0.5);
+    d[0] /= n;
+    d[1] = (b[1] - a[1]) / n;
+  };
+  auto step = [&](int x, int y, int dx, int dy, double d[2]) {
+    const int qx = x & ~1, qy = y & ~1;
+    if (covered(qx, qy) && covered(qx + dx, qy + dy))
+    {
+      change(qx, qy, dx, dy, d);
+      return;
+    }
+    for (int s : { 1, -1 })
+    {
+      if (covered(x + s * dx, y + s * dy))
+      {
+        change(std::min(x, x + s * dx), std::min(y, y + s * dy), dx, dy, d);
+        return;
+      }
+    }
+    d[0] = d[1] = 0.0;
+  };
+  for (int y = 0; y < size[1]; ++y)
+  {
+    for (int x = 0; x < size[0]; ++x)
+    {
+      const size_t i = static_cast<size_t>(y) * size[0] + x;
+      if (std::isnan(llh[i][0]))
+      {
+        continue;
+      }
+      double footprint[4];
+      step(x, y, 1, 0, footprint);
+      step(x, y, 0, 1, footprint + 2);
+      heights[i] = ComposedHeight(layers, llh[i][0], llh[i][1], footprint, vtkGlobeTerrain::PixelFootprint);
+    }
+  }
+  return heights;
 }
 
 /// Counts pixels whose depth is not the background's.

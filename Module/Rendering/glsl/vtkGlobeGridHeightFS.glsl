@@ -1,10 +1,14 @@
 //VTK::System::Dec
 //VTK::Output::Dec
 // Grid pass, step 2 (height composition): one fragment per grid point. The grid point's
-// geodetic (lon, lat) as hi + lo pairs; the height layers are composed there. Texture
-// derivatives between neighbouring grid points choose the mipmap level, so the heights are
-// filtered to the grid's own spacing.
+// geodetic (lon, lat) as hi + lo pairs; the height layers are composed there, filtered to the
+// grid's own spacing: the step to the nearer neighbour along each grid axis chooses the level.
 in vec2 texCoord;
+
+// The grid step (radians of lon and lat) along the grid's i and j axes, towards the nearer
+// neighbour: the height layers' level of detail (vtkGlobeLayerSet's GLOBE_GRID_FOOTPRINT).
+#define GLOBE_GRID_FOOTPRINT
+vec4 globeGridFootprint;
 
 //GLOBE::Math
 //GLOBE::Layers
@@ -16,9 +20,9 @@ uniform vec3 globeNadir;
 uniform float globePrimaryAltitude;
 uniform float globePrimaryRadius;
 
-void main()
+// The geodetic (lon, lat) of grid point ij as hi + lo pairs (hi.x, lo.x, hi.y, lo.y).
+vec4 globe_gridLonLat(ivec2 ij)
 {
-  ivec2 ij = ivec2(texCoord * vec2(textureSize(globeDirection, 0)));
   float lonHi;
   float lonLo;
   float latHi;
@@ -38,8 +42,52 @@ void main()
   lonLo = 0.0;
   latLo = 0.0;
 #endif
+  return vec4(lonHi, lonLo, latHi, latLo);
+}
+
+// The step (dlon, dlat) from a to b, the longitude within half a turn; the hi and lo parts
+// differenced apart, so that a step of metres keeps its digits.
+vec2 globe_gridStep(vec4 a, vec4 b)
+{
+  float dLon = (b.x - a.x) + (b.y - a.y);
+  dLon -= 6.283185307179586 * floor(dLon / 6.283185307179586 + 0.5);
+  return vec2(dLon, (b.z - a.z) + (b.w - a.w));
+}
+
+// Of the steps to the previous and the next grid point along one axis, the shorter on the
+// ground (either may be missing at the grid's edge or NaN off the body).
+vec2 globe_gridShorterStep(vec4 here, ivec2 ij, ivec2 axis, ivec2 size, float cosLat)
+{
+  vec2 best = vec2(0.0);
+  float bestLength = 1e30;
+  for (int k = -1; k <= 1; k += 2)
+  {
+    ivec2 at = ij + k * axis;
+    if (any(lessThan(at, ivec2(0))) || any(greaterThanEqual(at, size)))
+    {
+      continue;
+    }
+    vec2 d = globe_gridStep(here, globe_gridLonLat(at));
+    float l = length(vec2(d.x * cosLat, d.y));
+    if (!isnan(l) && l < bestLength)
+    {
+      best = d;
+      bestLength = l;
+    }
+  }
+  return best;
+}
+
+void main()
+{
+  ivec2 size = textureSize(globeDirection, 0);
+  ivec2 ij = ivec2(texCoord * vec2(size));
+  vec4 here = globe_gridLonLat(ij);
+  float cosLat = cos(here.z + here.w);
+  globeGridFootprint = vec4(globe_gridShorterStep(here, ij, ivec2(1, 0), size, cosLat),
+    globe_gridShorterStep(here, ij, ivec2(0, 1), size, cosLat));
   vec2 gradient;
-  float h = globe_composeHeight(lonHi, lonLo, latHi, latLo, gradient);
+  float h = globe_composeHeight(here.x, here.y, here.z, here.w, gradient);
   // Only .r is read; texCoord in .gb keeps the quad's texture coordinate alive when no height
   // layer is composed (h folds to 0 and the shader compiler would drop texCoordIn, which
   // vtkOpenGLQuadHelper reports as an error).

@@ -43,38 +43,6 @@ float globe_pageAt(sampler2DArray atlas, vec3 c, vec2 offset, bool nearest)
                  : textureLod(atlas, q, 0.0).r;
 }
 
-// The level of detail from the footprint, as OpenGL chooses a mipmap level: log2 of the larger
-// screen derivative in level-0 texels, within the pyramid.
-float globe_pageLod(vec4 pyramid, vec2 dx, vec2 dy)
-{
-  float rho = max(length(dx * pyramid.xy), length(dy * pyramid.xy));
-  return clamp(log2(max(rho, 1e-30)), 0.0, pyramid.z - 1.0);
-}
-
-// The level of detail for heights near a pole. A geographic layer's texels there are metres
-// wide and kilometres long (aspect cos lat), so a pixel metres wide spans many texels of
-// longitude but a sliver of one in latitude, and the level OpenGL would choose (from the
-// longer axis) averages heights degrees of latitude apart: a height is a position, and that
-// moves the surface by hundreds of metres. Within 1 / stretch of the longer axis, the level
-// comes from the footprint's shorter axis (the smaller singular value of its Jacobian in
-// level-0 texels; the screen axes would not do: longitude changes fast along both of them).
-// stretch: min(1, 10 cos lat) for geographic layers (1 below 84 degrees: OpenGL's level), 1
-// for the conformal projections.
-float globe_pageLodHeights(vec4 pyramid, vec2 dx, vec2 dy, float stretch)
-{
-  vec2 a = dx * pyramid.xy, b = dy * pyramid.xy;
-  float longer = max(length(a), length(b));
-  if (stretch >= 1.0)
-  {
-    return clamp(log2(max(longer, 1e-30)), 0.0, pyramid.z - 1.0);
-  }
-  float t = dot(a, a) + dot(b, b);
-  float det = abs(a.x * b.y - a.y * b.x);
-  float major = sqrt(0.5 * t + sqrt(max(0.25 * t * t - det * det, 0.0)));
-  float rho = max(det / max(major, 1e-30), longer * stretch);
-  return clamp(log2(max(rho, 1e-30)), 0.0, pyramid.z - 1.0);
-}
-
 // Heights at t and one level-0 texel east, west, north and south of it (the gradient),
 // with one page lookup per level: the neighbours lie in the same page or its border (two
 // texels, at least one level-0 texel at every level).
@@ -93,7 +61,7 @@ void globe_pageHeightsAt(sampler2DArray atlas, sampler2D table, vec4 pyramid, ve
 void globe_pageHeights(sampler2DArray atlas, sampler2D table, vec4 pyramid, vec4 t,
   vec2 dx, vec2 dy, float stretch, bool nearest, out float v, out vec4 ewns)
 {
-  float lod = globe_pageLodHeights(pyramid, dx, dy, stretch);
+  float lod = globe_footprintLodHeights(pyramid, dx, dy, stretch);
   if (nearest)
   {
     globe_pageHeightsAt(atlas, table, pyramid, t, int(floor(lod + 0.5)), true, v, ewns);
@@ -118,7 +86,7 @@ void globe_pageHeights(sampler2DArray atlas, sampler2D table, vec4 pyramid, vec4
 vec4 globe_pageGrad(sampler2DArray atlas, sampler2D table, vec4 pyramid, vec4 t, vec2 dx,
   vec2 dy, bool nearest)
 {
-  float lod = globe_pageLod(pyramid, dx, dy);
+  float lod = globe_footprintLod(pyramid, dx, dy);
   vec2 scale;
   if (nearest)
   {

@@ -1,0 +1,36 @@
+// The mipmap level a footprint needs (Documentation/composition.md "Filtering to the
+// footprint"), shared by whole-raster textures and streamed pages so that both filter alike.
+// pyramid: level 0's width and height in texels and the number of levels (a streamed layer's
+// pyramid uniform; .w is not read). dx, dy: screen derivatives of the texture coordinates.
+
+// The level of detail from the footprint, as OpenGL chooses a mipmap level: log2 of the larger
+// screen derivative in level-0 texels, within the pyramid.
+float globe_footprintLod(vec4 pyramid, vec2 dx, vec2 dy)
+{
+  float rho = max(length(dx * pyramid.xy), length(dy * pyramid.xy));
+  return clamp(log2(max(rho, 1e-30)), 0.0, pyramid.z - 1.0);
+}
+
+// The level of detail for heights near a pole. A geographic layer's texels there are metres
+// wide and kilometres long (aspect cos lat), so a pixel metres wide spans many texels of
+// longitude but a sliver of one in latitude, and the level OpenGL would choose (from the
+// longer axis) averages heights degrees of latitude apart: a height is a position, and that
+// moves the surface by hundreds of metres. Within 1 / stretch of the longer axis, the level
+// comes from the footprint's shorter axis (the smaller singular value of its Jacobian in
+// level-0 texels; the screen axes would not do: longitude changes fast along both of them).
+// stretch: min(1, 10 cos lat) for geographic layers (1 below 84 degrees: OpenGL's level), 1
+// for the conformal projections.
+float globe_footprintLodHeights(vec4 pyramid, vec2 dx, vec2 dy, float stretch)
+{
+  vec2 a = dx * pyramid.xy, b = dy * pyramid.xy;
+  float longer = max(length(a), length(b));
+  if (stretch >= 1.0)
+  {
+    return clamp(log2(max(longer, 1e-30)), 0.0, pyramid.z - 1.0);
+  }
+  float t = dot(a, a) + dot(b, b);
+  float det = abs(a.x * b.y - a.y * b.x);
+  float major = sqrt(0.5 * t + sqrt(max(0.25 * t * t - det * det, 0.0)));
+  float rho = max(det / max(major, 1e-30), longer * stretch);
+  return clamp(log2(max(rho, 1e-30)), 0.0, pyramid.z - 1.0);
+}
