@@ -49,6 +49,7 @@ struct Entry
   // layer maps the texture with a uniform instead of an upload.
   double UploadedScale = 1.0;
   double UploadedOffset = 0.0;
+  int UploadedLevels = 1; // of the whole-raster texture's pyramid
   int Added = 0;          // insertion index: ties in DrawOrder keep it
   bool Active = false;    // loaded, valid, supported and enabled
   bool Reported = false;  // an error about this layer was reported already
@@ -854,6 +855,7 @@ void vtkGlobeLayerSet::UploadTextures(vtkOpenGLRenderWindow* window, bool waitFo
     const int levels = std::max(1, layer->GetNumberOfLevels());
     e.Texture->SetBaseLevel(0);
     e.Texture->SetMaxLevel(levels - 1);
+    e.UploadedLevels = levels;
     const int type = height ? VTK_FLOAT : VTK_UNSIGNED_CHAR, components = height ? 1 : 4;
     e.Texture->Create2DFromRaw(w, h, components, type, data->GetVoidPointer(0));
     e.Texture->Bind();
@@ -868,7 +870,7 @@ void vtkGlobeLayerSet::UploadTextures(vtkOpenGLRenderWindow* window, bool waitFo
       layer->GetLevelDimensions(l, size);
       if (!level)
       {
-        e.Texture->SetMaxLevel(l - 1);
+        e.UploadedLevels = l;
         break;
       }
       glTexImage2D(GL_TEXTURE_2D, l, internal, size[0], size[1], 0, format, glType,
@@ -1959,6 +1961,8 @@ void vtkGlobeLayerSet::BindTextures(vtkShaderProgram* program, int roles)
           nearest ? vtkTextureObject::Nearest : vtkTextureObject::Linear);
         e->Texture->SetMinificationFilter(
           nearest ? vtkTextureObject::Nearest : vtkTextureObject::LinearMipmapLinear);
+        // A texture parameter, sent when the texture is bound: no upload, no new program.
+        e->Texture->SetMaxLevel(this->FootprintFiltering ? e->UploadedLevels - 1 : 0);
         e->Texture->Activate();
         program->SetUniformi(p.c_str(), e->Texture->GetTextureUnit());
       }
@@ -2101,6 +2105,7 @@ void vtkGlobeLayerSet::PrintSelf(ostream& os, vtkIndent indent)
      << this->PlausibleHeightRange[1] << " m\n";
   os << indent << "NumberOfUploads: " << this->NumberOfUploads << "\n";
   os << indent << "HighPrecisionGeodetic: " << this->HighPrecisionGeodetic << "\n";
+  os << indent << "FootprintFiltering: " << this->FootprintFiltering << "\n";
   os << indent << "GeodeticReference: " << vtkMath::DegreesFromRadians(this->ReferenceLonLat[0])
      << ", " << vtkMath::DegreesFromRadians(this->ReferenceLonLat[1]) << " deg\n";
 }

@@ -161,6 +161,19 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Whole-raster layers filtered to the footprint (default on; Documentation/composition.md
+   * "Filtering to the footprint"). Off: their textures are read at level 0 whatever the
+   * footprint, each value the data's own (bilinear between posts) but distant terrain
+   * aliasing; what the renderer did before the pyramid was uploaded, kept to compare and for
+   * inspecting values. Streamed layers always filter. A texture parameter: no upload.
+   */
+  vtkSetMacro(FootprintFiltering, bool);
+  vtkGetMacro(FootprintFiltering, bool);
+  vtkBooleanMacro(FootprintFiltering, bool);
+  ///@}
+
+  ///@{
   /// Hi + lo geodetic (lon, lat) from a local origin (default on); part of GetShaderKey().
   vtkSetMacro(HighPrecisionGeodetic, bool);
   vtkGetMacro(HighPrecisionGeodetic, bool);
@@ -203,6 +216,7 @@ protected:
   bool LayerCulling = true;
   int NumberOfCulledLayers = 0;
   bool HighPrecisionGeodetic = true;
+  bool FootprintFiltering = true;
   double ReferenceDirection[3] = { 1.0, 0.0, 0.0 };
   double ReferenceLonLat[2] = { 0.0, 0.0 };
   double PlausibleHeightRange[2] = { -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };

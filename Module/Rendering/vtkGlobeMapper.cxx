@@ -382,6 +382,20 @@ bool vtkGlobeMapper::GetHighPrecisionGeodetic()
   return this->Internals->Layers->GetHighPrecisionGeodetic();
 }
 
+void vtkGlobeMapper::SetFootprintFiltering(bool on)
+{
+  if (this->Internals->Layers->GetFootprintFiltering() != on)
+  {
+    this->Internals->Layers->SetFootprintFiltering(on);
+    this->Modified();
+  }
+}
+
+bool vtkGlobeMapper::GetFootprintFiltering()
+{
+  return this->Internals->Layers->GetFootprintFiltering();
+}
+
 vtkGlobeProjectiveGrid* vtkGlobeMapper::GetProjectiveGrid()
 {
   return this->Internals->Grid;
@@ -1298,6 +1312,7 @@ void vtkGlobeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GridPixelsPerCell: " << this->GridPixelsPerCell << "\n";
   os << indent << "Layers: " << in.Layers->GetNumberOfLayers() << "\n";
   os << indent << "HighPrecisionGeodetic: " << this->GetHighPrecisionGeodetic() << "\n";
+  os << indent << "FootprintFiltering: " << this->GetFootprintFiltering() << "\n";
   os << indent << "WaitForPages: " << this->WaitForPages << "\n";
   os << indent << "PageCache:\n";
   in.Layers->GetPageCache()->PrintSelf(os, indent.GetNextIndent());

@@ -207,6 +207,20 @@ public:
 
   ///@{
   /**
+   * Layers filtered to each grid point's and pixel's footprint (default on;
+   * Documentation/composition.md "Filtering to the footprint"): distant terrain does not alias
+   * or shimmer. Off: whole-raster layers are read at level 0 whatever the footprint (each value
+   * the data's own, as before the filtering existed; streamed layers always filter). Forwards
+   * to vtkGlobeLayerSet::SetFootprintFiltering; no upload, no new program.
+   */
+  void SetFootprintFiltering(bool on);
+  bool GetFootprintFiltering();
+  void FootprintFilteringOn() { this->SetFootprintFiltering(true); }
+  void FootprintFilteringOff() { this->SetFootprintFiltering(false); }
+  ///@}
+
+  ///@{
+  /**
    * Streamed layers (vtkGlobeLayer::IsStreamed; Documentation/streaming.md). Each frame the
    * mapper samples the G-buffer's footprint (vtkGlobePageFeedback), the layer set turns it
    * into the pages each streamed layer needs, and the page cache reads them on worker

@@ -8,6 +8,9 @@
 //  raster   the whole Earth with a global height and colour layer of 1024 x 512 against the same
 //           function sampled at 16384 x 8192 (footprint-matched MIP levels make the frame
 //           independent of the data's size).
+//  filtering  footprint filtering against level 0 whatever the footprint (FootprintFiltering
+//           off, the renderer before the filtering): the whole Earth at 1024 and 16384, and the
+//           Data/earth layers in the whole-Earth and the Rainier views.
 //  grid     the automatic grid (GridPixelsPerCell 1.6) at 400 x 300, 800 x 600 and 1600 x 1200
 //           at Rainier, with a fixed 512^2 grid in the same windows.
 //
@@ -214,6 +217,31 @@ std::vector<Config> MakeConfigs(const std::string& only)
         s.Mapper->AddLayer(GlobalLayer(cw, cw / 2, false));
       });
   }
+  // Footprint filtering (Documentation/composition.md "Filtering to the footprint") against
+  // level 0 whatever the footprint (the renderer before it): what the filtering costs, and
+  // how much of the data's size reached the frame without it.
+  for (const int size : { 1024, 16384 })
+  {
+    add("filtering", "earth", std::to_string(size) + " heights + colour, filtered",
+      [size](vtkGlobeTest::Scene& s) {
+        s.Mapper->AddLayer(GlobalLayer(size, size / 2, true));
+        s.Mapper->AddLayer(GlobalLayer(size, size / 2, false));
+      });
+    add("filtering", "earth", std::to_string(size) + " heights + colour, level 0",
+      [size](vtkGlobeTest::Scene& s) {
+        s.Mapper->AddLayer(GlobalLayer(size, size / 2, true));
+        s.Mapper->AddLayer(GlobalLayer(size, size / 2, false));
+        s.Mapper->FootprintFilteringOff();
+      });
+  }
+  for (const std::string where : { "earth", "rainier" })
+  {
+    add("filtering", where, "Data/earth layers, filtered", [](vtkGlobeTest::Scene& s) { s.AddEarthLayers(); });
+    add("filtering", where, "Data/earth layers, level 0", [](vtkGlobeTest::Scene& s) {
+      s.AddEarthLayers();
+      s.Mapper->FootprintFilteringOff();
+    });
+  }
   for (const int w : { 400, 800, 1600 })
   {
     add("grid", "rainier", "automatic (1.6 px per cell)", [](vtkGlobeTest::Scene& s) {
@@ -251,7 +279,7 @@ int main(int argc, char* argv[])
     }
     else
     {
-      std::printf("usage: %s [--frames N] [--rounds R] [--json PATH] [--only layers|raster|grid]\n"
+      std::printf("usage: %s [--frames N] [--rounds R] [--json PATH] [--only layers|raster|filtering|grid]\n"
                   "  What the frame costs against what it shows: out-of-view insets, the data's\n"
                   "  size, the automatic grid (see the comment at the top of the source).\n",
         argv[0]);
@@ -295,7 +323,9 @@ int main(int argc, char* argv[])
   {
     const Config& c = configs[i];
     const bool newGroup = !first || first->Section != c.Section || first->Scene != c.Scene ||
-      (c.Section == "grid" && first->Width != c.Width);
+      (c.Section == "grid" && first->Width != c.Width) ||
+      (c.Section == "filtering" &&
+        c.Label.substr(0, c.Label.find(',')) != first->Label.substr(0, first->Label.find(',')));
     if (newGroup)
     {
       first = &c;

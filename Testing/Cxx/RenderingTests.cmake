@@ -54,7 +54,10 @@ list(APPEND globe_rendering_tests
   TestGlobeLayerCulling.cxx)
 # Pictures (issue 14): heights coloured by any vtkScalarsToColors.
 list(APPEND globe_rendering_tests
-  TestGlobeHeightColors.cxx)
+  TestGlobeHeightColors.cxx
+  # Issue 14: distant terrain filtered to the footprint, flicker and speckle against a
+  # supersampled reference.
+  TestGlobeAliasing.cxx)
 # Reliability (issue 16): extreme heights, layers removed while loading, failures reported
 # once, cameras that see nothing reported once.
 list(APPEND globe_rendering_tests

@@ -45,20 +45,13 @@ vec4 globe_gridLonLat(ivec2 ij)
   return vec4(lonHi, lonLo, latHi, latLo);
 }
 
-// The step (dlon, dlat) from a to b, the longitude within half a turn; the hi and lo parts
-// differenced apart, so that a step of metres keeps its digits.
-vec2 globe_gridStep(vec4 a, vec4 b)
+// Of the steps to the previous and the next grid point along one axis, the shorter: as a
+// change of the scaled-space direction, from the eye-relative primary-sphere points (their
+// difference is the directions' times r_p, exact where the steps are small: near the eye).
+// Either may be missing at the grid's edge or NaN off the body.
+vec3 globe_gridShorterStep(vec3 p, ivec2 ij, ivec2 axis, ivec2 size)
 {
-  float dLon = (b.x - a.x) + (b.y - a.y);
-  dLon -= 6.283185307179586 * floor(dLon / 6.283185307179586 + 0.5);
-  return vec2(dLon, (b.z - a.z) + (b.w - a.w));
-}
-
-// Of the steps to the previous and the next grid point along one axis, the shorter on the
-// ground (either may be missing at the grid's edge or NaN off the body).
-vec2 globe_gridShorterStep(vec4 here, ivec2 ij, ivec2 axis, ivec2 size, float cosLat)
-{
-  vec2 best = vec2(0.0);
+  vec3 best = vec3(0.0);
   float bestLength = 1e30;
   for (int k = -1; k <= 1; k += 2)
   {
@@ -67,8 +60,8 @@ vec2 globe_gridShorterStep(vec4 here, ivec2 ij, ivec2 axis, ivec2 size, float co
     {
       continue;
     }
-    vec2 d = globe_gridStep(here, globe_gridLonLat(at));
-    float l = length(vec2(d.x * cosLat, d.y));
+    vec3 d = (texelFetch(globePosition, at, 0).xyz - p) / globePrimaryRadius;
+    float l = length(d);
     if (!isnan(l) && l < bestLength)
     {
       best = d;
@@ -78,14 +71,27 @@ vec2 globe_gridShorterStep(vec4 here, ivec2 ij, ivec2 axis, ivec2 size, float co
   return best;
 }
 
+// A step of the scaled-space direction s as (dlon, dlat) in radians: on the unit sphere, with
+// geocentric angles (within the body's flattening of the geodetic ones: enough for a level
+// of detail).
+vec2 globe_gridLonLatStep(vec3 s, vec3 step)
+{
+  float lon = atan(s.y, s.x);
+  float cosLat = max(length(s.xy), 1e-7);
+  vec3 east = vec3(-sin(lon), cos(lon), 0.0);
+  vec3 north = vec3(-s.z * cos(lon), -s.z * sin(lon), cosLat);
+  return vec2(dot(step, east) / cosLat, dot(step, north));
+}
+
 void main()
 {
   ivec2 size = textureSize(globeDirection, 0);
   ivec2 ij = ivec2(texCoord * vec2(size));
   vec4 here = globe_gridLonLat(ij);
-  float cosLat = cos(here.z + here.w);
-  globeGridFootprint = vec4(globe_gridShorterStep(here, ij, ivec2(1, 0), size, cosLat),
-    globe_gridShorterStep(here, ij, ivec2(0, 1), size, cosLat));
+  vec3 p = texelFetch(globePosition, ij, 0).xyz;
+  vec3 s = globe_normalize(texelFetch(globeDirection, ij, 0).xyz);
+  globeGridFootprint = vec4(globe_gridLonLatStep(s, globe_gridShorterStep(p, ij, ivec2(1, 0), size)),
+    globe_gridLonLatStep(s, globe_gridShorterStep(p, ij, ivec2(0, 1), size)));
   vec2 gradient;
   float h = globe_composeHeight(here.x, here.y, here.z, here.w, gradient);
   // Only .r is read; texCoord in .gb keeps the quad's texture coordinate alive when no height
