@@ -9,13 +9,15 @@
 //               and behind the globe, sharing its depth buffer.
 //
 //   GlobeEarth [--data DIR] [--out DIR] [--view NAME|all] [--size WxH] [--grid N]
-//              [--interactive]
+//              [--interactive] [--no-filtering]
 //
 // Without --interactive it renders each viewpoint offscreen and writes globe-NAME.png files (no
 // display needed); with it, it opens a window navigated by vtkGlobeInteractorStyle (drag the
 // ground, wheel to zoom toward the cursor, Ctrl+drag to tilt and turn; n north up, u look down,
 // r the whole Earth; 1/2/3 for the Earth's viewpoints, q to quit). The grid follows the window
-// (the mapper's default) unless --grid fixes it.
+// (the mapper's default) unless --grid fixes it. --no-filtering reads the Earth's layers at
+// full resolution whatever the footprint (vtkGlobeMapper::FootprintFilteringOff): the
+// "before" pictures of Documentation/composition.md "Filtering to the footprint".
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
@@ -183,7 +185,7 @@ int main(int argc, char* argv[])
 {
   std::string data = VTKGLOBE_DATA_DIR, out = ".", view = "all";
   int width = 800, height = 600, grid = 0;
-  bool interactive = false;
+  bool interactive = false, filtering = true;
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -212,11 +214,15 @@ int main(int argc, char* argv[])
     {
       interactive = true;
     }
+    else if (arg == "--no-filtering")
+    {
+      filtering = false; // level 0 whatever the footprint: the "before" of the filtering
+    }
     else
     {
       std::printf("usage: %s [--data DIR] [--out DIR] "
                   "[--view earth|rainier|everest|moon|companions|all] [--size WxH] [--grid N] "
-                  "[--interactive]\n",
+                  "[--interactive] [--no-filtering]\n",
         argv[0]);
       return arg == "--help" || arg == "-h" ? 0 : 2;
     }
@@ -229,6 +235,7 @@ int main(int argc, char* argv[])
   {
     mapper->SetGridResolution(grid);
   }
+  mapper->SetFootprintFiltering(filtering);
   AddLayer(mapper, data + "/earth/relief_2deg.tif", true);
   AddLayer(mapper, data + "/earth/mt_rainier_90m.tif", true);
   AddLayer(mapper, data + "/earth/mt_everest_90m.tif", true);
@@ -245,6 +252,7 @@ int main(int argc, char* argv[])
   vtkNew<vtkGlobeEllipsoid> moonBody;
   moonBody->SetToMoon();
   vtkNew<vtkGlobeMapper> moonMapper;
+  moonMapper->SetFootprintFiltering(filtering);
   moonMapper->SetEllipsoid(moonBody);
   if (grid > 0)
   {

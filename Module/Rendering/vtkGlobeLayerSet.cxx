@@ -1178,8 +1178,8 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
   }
   s << vtkGlobeFootprint;
   // Heights' level of detail: OpenGL's (the longer axis) per pixel; on the grid the shorter
-  // axis within 16:1 (GLOBE_GRID_FOOTPRINT), since a grid step along the view is long where
-  // the grid meets the horizon, and the longer axis there levels distant peaks.
+  // axis within 16:1 (GLOBE_GRID_FOOTPRINT), since a grid cell seen at a grazing angle is long
+  // along the view, and the longer axis there levels distant peaks.
   s << "#ifdef GLOBE_GRID_FOOTPRINT\nconst float globe_heightStretch = 1.0 / 16.0;\n#else\n"
        "const float globe_heightStretch = 1.0;\n#endif\n";
   if (streamed[0] || streamed[1])
@@ -1413,13 +1413,13 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
         s << "  vec2 uv" << i << " = " << UV(e, p, At(hp), hp) << ";\n";
       }
       s << "  vec2 dx" << i << ", dy" << i << ";\n";
-      if (height)
       {
-        // In the grid pass, from the grid step towards the nearer neighbour along each axis
-        // (globeGridFootprint, radians of lon and lat) through the layer's Jacobian: a grid
-        // point next to the horizon keeps the level of its own small triangles where screen
-        // derivatives would take that of the long step across the horizon.
-        s << "#ifdef GLOBE_GRID_FOOTPRINT\n";
+        // In the grid and screen passes, from the step towards the nearer neighbour along each
+        // axis (globeFootprint, radians of lon and lat) through the layer's Jacobian: a grid
+        // point next to the horizon, or a pixel on a ridge's silhouette, keeps the level of its
+        // own surface where screen derivatives would take that of the long step across to
+        // another one (the horizon's far side, the terrain behind the ridge).
+        s << "#ifdef GLOBE_FOOTPRINT\n";
         if (e->Function.empty())
         {
           s << "  vec2 jLon" << i << " = vec2(1.0 / " << p << "Map.y, 0.0);\n"
@@ -1438,17 +1438,14 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
           }
           s << "  " << lon << " /= 1e-4;\n  " << lat << " /= lat > 0.0 ? -1e-4 : 1e-4;\n";
         }
-        s << "  dx" << i << " = jLon" << i << " * globeGridFootprint.x + jLat" << i
-          << " * globeGridFootprint.y;\n"
-          << "  dy" << i << " = jLon" << i << " * globeGridFootprint.z + jLat" << i
-          << " * globeGridFootprint.w;\n"
+        s << "  dx" << i << " = jLon" << i << " * globeFootprint.x + jLat" << i
+          << " * globeFootprint.y;\n"
+          << "  dy" << i << " = jLon" << i << " * globeFootprint.z + jLat" << i
+          << " * globeFootprint.w;\n"
           << "#else\n";
       }
-      s << "  globe_uvDerivatives(uv" << i << ", " << wraps << ", dx" << i << ", dy" << i << ");\n";
-      if (height)
-      {
-        s << "#endif\n";
-      }
+      s << "  globe_uvDerivatives(uv" << i << ", " << wraps << ", dx" << i << ", dy" << i << ");\n"
+        << "#endif\n";
     }
     for (size_t i = 0; i < list.size(); ++i)
     {

@@ -50,6 +50,7 @@ int TestGlobeInsets(int argc, char* argv[])
     const int* size = scene.Window->GetSize();
     const std::vector<unsigned char> pixels = vtkGlobeTest::ReadPixels(scene.Window);
     const std::vector<float> depth = vtkGlobeTest::ReadDepth(scene.Window);
+    const auto llhs = vtkGlobeTest::GeodeticPixels(scene);
     double e[4];
     inset.Layer->GetGeographicExtent(e);
     const double texel = (e[1] - e[0]) / inset.Layer->GetNumberOfColumns();
@@ -75,18 +76,10 @@ int TestGlobeInsets(int argc, char* argv[])
         {
           continue;
         }
-        // The level the GPU filters to: the footprint from the neighbours right and up.
-        double right[3], up[3], q[3];
-        const size_t ir = i + 1, iu = i + size[0];
-        if (x + 1 >= size[0] || y + 1 >= size[1] || depth[ir] >= 1.0f || depth[iu] >= 1.0f)
-        {
-          continue;
-        }
-        vtkGlobeTest::UnprojectPixel(scene.Renderer, x + 1.5, y + 0.5, depth[ir], q);
-        scene.Body->CartesianToGeodetic(q, right);
-        vtkGlobeTest::UnprojectPixel(scene.Renderer, x + 0.5, y + 1.5, depth[iu], q);
-        scene.Body->CartesianToGeodetic(q, up);
-        const double lod = vtkGlobeTest::PixelLod(inset.Layer, llh, right, up);
+        // The level the GPU filters to, from the pixel's footprint.
+        double footprint[4];
+        vtkGlobeTest::PixelFootprint(size, llhs, x, y, footprint);
+        const double lod = vtkGlobeTest::PixelLod(inset.Layer, llh, footprint);
         maxLod = std::max(maxLod, lod);
         ++inside;
         double d = 0.0;

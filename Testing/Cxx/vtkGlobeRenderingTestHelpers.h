@@ -395,26 +395,27 @@ inline bool SampleLayer(vtkGlobeLayer* layer, double lon, double lat, int compon
 }
 
 /**
- * The level of detail OpenGL takes for a layer at a pixel (textureGrad: log2 of the longer
- * screen derivative in texels), from the geodetic positions (deg) of the pixel and of its
- * neighbours one pixel right and one up.
+ * The level of detail the screen pass takes for a layer at a pixel (log2 of the longer screen
+ * step in texels) from its footprint (PixelFootprint: degrees of lon and lat per pixel along x
+ * and y).
  */
-inline double PixelLod(vtkGlobeLayer* layer, const double here[2], const double right[2], const double up[2])
+inline double PixelLod(vtkGlobeLayer* layer, const double here[2], const double footprint[4])
 {
-  double u, v, ur, vr, uu, vu;
-  if (!LayerUV(layer, here[0], here[1], u, v) || !LayerUV(layer, right[0], right[1], ur, vr) ||
-    !LayerUV(layer, up[0], up[1], uu, vu))
+  double u, v, ux, vx, uy, vy;
+  if (!LayerUV(layer, here[0], here[1], u, v) ||
+    !LayerUV(layer, here[0] + footprint[0], here[1] + footprint[1], ux, vx) ||
+    !LayerUV(layer, here[0] + footprint[2], here[1] + footprint[3], uy, vy))
   {
     return 0.0;
   }
   const double w = layer->GetNumberOfColumns(), h = layer->GetNumberOfRows();
-  double dxu = ur - u, dyu = uu - u;
+  double dxu = ux - u, dyu = uy - u;
   if (layer->IsGlobal())
   {
     dxu -= std::floor(dxu + 0.5);
     dyu -= std::floor(dyu + 0.5);
   }
-  const double rho = std::max(std::hypot(dxu * w, (vr - v) * h), std::hypot(dyu * w, (vu - v) * h));
+  const double rho = std::max(std::hypot(dxu * w, (vx - v) * h), std::hypot(dyu * w, (vy - v) * h));
   return std::max(0.0, std::log2(std::max(rho, 1e-300)));
 }
 
@@ -966,47 +967,55 @@ inline void GBufferPoint(Scene& scene, const float texel[4], bool withHeight, do
 }
 
 /**
+ * A pixel's footprint as the screen pass takes it (vtkGlobeCompositeFS.glsl): per axis, the
+ * change of (lon, lat) in degrees to the nearer (on the ground) of the two neighbours that are
+ * covered; 0 where neither is. llh: GeodeticPixels' positions.
+ */
+inline void PixelFootprint(const int size[2], const std::vector<std::array<double, 3>>& llh, int x,
+  int y, double footprint[4])
+{
+  const auto& here = llh[static_cast<size_t>(y) * size[0] + x];
+  for (int axis = 0; axis < 2; ++axis)
+  {
+    double* d = footprint + 2 * axis;
+    d[0] = d[1] = 0.0;
+    double best = 1e300;
+    for (int k : { -1, 1 })
+    {
+      const int a = x + (axis == 0 ? k : 0), b = y + (axis == 1 ? k : 0);
+      if (a < 0 || b < 0 || a >= size[0] || b >= size[1])
+      {
+        continue;
+      }
+      const auto& o = llh[static_cast<size_t>(b) * size[0] + a];
+      if (std::isnan(o[0]))
+      {
+        continue;
+      }
+      double dLon = k * (o[0] - here[0]);
+      dLon -= 360.0 * std::floor(dLon / 360.0 + 0.5);
+      const double dLat = k * (o[1] - here[1]);
+      const double l = std::hypot(dLon * std::cos(here[1] * 3.14159265358979 / 180.0), dLat);
+      if (l < best)
+      {
+        best = l;
+        d[0] = dLon;
+        d[1] = dLat;
+      }
+    }
+  }
+}
+
+/**
  * The composed height at each pixel of GeodeticPixels' positions as the screen passes filter
- * it (vtkGlobeTerrain::PixelFootprint), with the footprint as the GPU's derivatives take it:
- * per 2 x 2 quad, from its lower-left pixel to the next one right and up (coarse derivatives);
- * where one of those is not covered, from the pixel's own neighbours. NaN where nothing is
- * drawn.
+ * it (vtkGlobeTerrain::PixelFootprint) at the pixel's footprint (PixelFootprint). NaN where
+ * nothing is drawn.
  */
 inline std::vector<double> PixelHeights(Scene& scene, const std::vector<vtkGlobeLayer*>& layers,
   const std::vector<std::array<double, 3>>& llh)
 {
   const int* size = scene.Window->GetSize();
   std::vector<double> heights(llh.size(), NAN);
-  auto covered = [&](int x, int y) {
-    return x >= 0 && y >= 0 && x < size[0] && y < size[1] &&
-      !std::isnan(llh[static_cast<size_t>(y) * size[0] + x][0]);
-  };
-  // The change of (lon, lat) from pixel (x, y) to (x + dx, y + dy), per pixel of the step.
-  auto change = [&](int x, int y, int dx, int dy, double d[2]) {
-    const auto& a = llh[static_cast<size_t>(y) * size[0] + x];
-    const auto& b = llh[static_cast<size_t>(y + dy) * size[0] + x + dx];
-    const int n = dx + dy;
-    d[0] = (b[0] - a[0]) - 360.0 * std::floor((b[0] - a[0]) / 360.0 + 0.5);
-    d[0] /= n;
-    d[1] = (b[1] - a[1]) / n;
-  };
-  auto step = [&](int x, int y, int dx, int dy, double d[2]) {
-    const int qx = x & ~1, qy = y & ~1;
-    if (covered(qx, qy) && covered(qx + dx, qy + dy))
-    {
-      change(qx, qy, dx, dy, d);
-      return;
-    }
-    for (int s : { 1, -1 })
-    {
-      if (covered(x + s * dx, y + s * dy))
-      {
-        change(std::min(x, x + s * dx), std::min(y, y + s * dy), dx, dy, d);
-        return;
-      }
-    }
-    d[0] = d[1] = 0.0;
-  };
   for (int y = 0; y < size[1]; ++y)
   {
     for (int x = 0; x < size[0]; ++x)
@@ -1017,8 +1026,7 @@ inline std::vector<double> PixelHeights(Scene& scene, const std::vector<vtkGlobe
         continue;
       }
       double footprint[4];
-      step(x, y, 1, 0, footprint);
-      step(x, y, 0, 1, footprint + 2);
+      PixelFootprint(size, llh, x, y, footprint);
       heights[i] = ComposedHeight(layers, llh[i][0], llh[i][1], footprint, vtkGlobeTerrain::PixelFootprint);
     }
   }

@@ -8,6 +8,11 @@
 // the depth test on, so other actors occlude the globe and are occluded by it.
 in vec2 texCoord;
 
+// Each pixel's footprint (radians of lon and lat per pixel along x and y) from the step to the
+// nearer covered neighbour: the layers' level of detail (vtkGlobeLayerSet's GLOBE_FOOTPRINT).
+#define GLOBE_FOOTPRINT
+vec4 globeFootprint;
+
 //GLOBE::Math
 //GLOBE::Layers
 //GLOBE::EffectFunctions
@@ -25,6 +30,19 @@ uniform vec3 globeBaseColor;
 // coordinates (directions only).
 uniform vec3 globeEye;
 uniform mat4 globeClipToEye;
+
+// The step of the G-buffer's direction (or offset: their differences are the same) to the
+// pixel `k` pixels along `axis`; 1e30 where that pixel is off the window or not the globe's.
+vec3 globe_pixelStep(vec3 g, ivec2 ij, ivec2 axis, int k)
+{
+  ivec2 at = ij + k * axis;
+  if (any(lessThan(at, ivec2(0))) || any(greaterThanEqual(at, textureSize(globeGBuffer, 0))) ||
+    !(texelFetch(globeDepth, at, 0).r < 1.0))
+  {
+    return vec3(1e30);
+  }
+  return float(k) * (texelFetch(globeGBuffer, at, 0).xyz - g);
+}
 
 void main()
 {
@@ -54,6 +72,16 @@ void main()
   float lon = lonHi;
 #endif
   float lat = latHi + latLo;
+  {
+    ivec2 ij = ivec2(texCoord * vec2(textureSize(globeGBuffer, 0)));
+    vec3 stepX = globe_footprintShorterStep(
+      globe_pixelStep(g.xyz, ij, ivec2(1, 0), -1), globe_pixelStep(g.xyz, ij, ivec2(1, 0), 1));
+    vec3 stepY = globe_footprintShorterStep(
+      globe_pixelStep(g.xyz, ij, ivec2(0, 1), -1), globe_pixelStep(g.xyz, ij, ivec2(0, 1), 1));
+    globeFootprint = covered
+      ? vec4(globe_footprintLonLatStep(s, stepX), globe_footprintLonLatStep(s, stepY))
+      : vec4(0.0);
+  }
   vec4 far = globeClipToEye * vec4(2.0 * texCoord - 1.0, 1.0, 1.0);
   vec3 ray = globe_normalize(far.xyz / far.w);
 

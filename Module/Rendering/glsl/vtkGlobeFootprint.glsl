@@ -34,3 +34,30 @@ float globe_footprintLodHeights(vec4 pyramid, vec2 dx, vec2 dy, float stretch)
   float rho = max(det / max(major, 1e-30), longer * stretch);
   return clamp(log2(max(rho, 1e-30)), 0.0, pyramid.z - 1.0);
 }
+
+// A step of the scaled-space direction s as (dlon, dlat) in radians: on the unit sphere, with
+// geocentric angles (within the body's flattening of the geodetic ones: enough for a level of
+// detail). The grid pass and the screen pass take their footprints this way, from the step to
+// the nearer neighbour along each axis (GLOBE_FOOTPRINT below).
+vec2 globe_footprintLonLatStep(vec3 s, vec3 step)
+{
+  float lon = atan(s.y, s.x);
+  float cosLat = max(length(s.xy), 1e-7);
+  vec3 east = vec3(-sin(lon), cos(lon), 0.0);
+  vec3 north = vec3(-s.z * cos(lon), -s.z * sin(lon), cosLat);
+  return vec2(dot(step, east) / cosLat, dot(step, north));
+}
+
+// Of two steps to the neighbours on either side, the shorter; a missing one (vec3(1e30): beyond
+// the grid or the window, or not on the body) or a NaN one loses: across a silhouette or the
+// horizon one side jumps to another surface.
+vec3 globe_footprintShorterStep(vec3 before, vec3 after)
+{
+  float a = length(before), b = length(after);
+  bool hasA = !isnan(a) && a < 1e29, hasB = !isnan(b) && b < 1e29;
+  if (hasA && (!hasB || a <= b))
+  {
+    return before;
+  }
+  return hasB ? after : vec3(0.0);
+}

@@ -6,9 +6,11 @@
 in vec2 texCoord;
 
 // The grid step (radians of lon and lat) along the grid's i and j axes, towards the nearer
-// neighbour: the height layers' level of detail (vtkGlobeLayerSet's GLOBE_GRID_FOOTPRINT).
+// neighbour: the height layers' level of detail (vtkGlobeLayerSet's GLOBE_FOOTPRINT), by the
+// grid's rule (GLOBE_GRID_FOOTPRINT: the shorter axis within 16:1).
+#define GLOBE_FOOTPRINT
 #define GLOBE_GRID_FOOTPRINT
-vec4 globeGridFootprint;
+vec4 globeFootprint;
 
 //GLOBE::Math
 //GLOBE::Layers
@@ -45,42 +47,17 @@ vec4 globe_gridLonLat(ivec2 ij)
   return vec4(lonHi, lonLo, latHi, latLo);
 }
 
-// Of the steps to the previous and the next grid point along one axis, the shorter: as a
-// change of the scaled-space direction, from the eye-relative primary-sphere points (their
-// difference is the directions' times r_p, exact where the steps are small: near the eye).
-// Either may be missing at the grid's edge or NaN off the body.
-vec3 globe_gridShorterStep(vec3 p, ivec2 ij, ivec2 axis, ivec2 size)
+// The step to the neighbouring grid point `k` grid points along `axis` as a change of the
+// scaled-space direction, from the eye-relative primary-sphere points (their difference is the
+// directions' times r_p, exact where the steps are small: near the eye); 1e30 beyond the grid.
+vec3 globe_gridStep(vec3 p, ivec2 ij, ivec2 axis, int k, ivec2 size)
 {
-  vec3 best = vec3(0.0);
-  float bestLength = 1e30;
-  for (int k = -1; k <= 1; k += 2)
+  ivec2 at = ij + k * axis;
+  if (any(lessThan(at, ivec2(0))) || any(greaterThanEqual(at, size)))
   {
-    ivec2 at = ij + k * axis;
-    if (any(lessThan(at, ivec2(0))) || any(greaterThanEqual(at, size)))
-    {
-      continue;
-    }
-    vec3 d = (texelFetch(globePosition, at, 0).xyz - p) / globePrimaryRadius;
-    float l = length(d);
-    if (!isnan(l) && l < bestLength)
-    {
-      best = d;
-      bestLength = l;
-    }
+    return vec3(1e30);
   }
-  return best;
-}
-
-// A step of the scaled-space direction s as (dlon, dlat) in radians: on the unit sphere, with
-// geocentric angles (within the body's flattening of the geodetic ones: enough for a level
-// of detail).
-vec2 globe_gridLonLatStep(vec3 s, vec3 step)
-{
-  float lon = atan(s.y, s.x);
-  float cosLat = max(length(s.xy), 1e-7);
-  vec3 east = vec3(-sin(lon), cos(lon), 0.0);
-  vec3 north = vec3(-s.z * cos(lon), -s.z * sin(lon), cosLat);
-  return vec2(dot(step, east) / cosLat, dot(step, north));
+  return float(k) * (texelFetch(globePosition, at, 0).xyz - p) / globePrimaryRadius;
 }
 
 void main()
@@ -90,8 +67,11 @@ void main()
   vec4 here = globe_gridLonLat(ij);
   vec3 p = texelFetch(globePosition, ij, 0).xyz;
   vec3 s = globe_normalize(texelFetch(globeDirection, ij, 0).xyz);
-  globeGridFootprint = vec4(globe_gridLonLatStep(s, globe_gridShorterStep(p, ij, ivec2(1, 0), size)),
-    globe_gridLonLatStep(s, globe_gridShorterStep(p, ij, ivec2(0, 1), size)));
+  vec3 stepI = globe_footprintShorterStep(globe_gridStep(p, ij, ivec2(1, 0), -1, size),
+    globe_gridStep(p, ij, ivec2(1, 0), 1, size));
+  vec3 stepJ = globe_footprintShorterStep(globe_gridStep(p, ij, ivec2(0, 1), -1, size),
+    globe_gridStep(p, ij, ivec2(0, 1), 1, size));
+  globeFootprint = vec4(globe_footprintLonLatStep(s, stepI), globe_footprintLonLatStep(s, stepJ));
   vec2 gradient;
   float h = globe_composeHeight(here.x, here.y, here.z, here.w, gradient);
   // Only .r is read; texCoord in .gb keeps the quad's texture coordinate alive when no height
