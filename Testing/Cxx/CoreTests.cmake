@@ -17,7 +17,8 @@ set(globe_core_tests
   TestGlobeFeatherDistance.cxx
   TestGlobeMapProjection.cxx
   TestGlobeMapProjectionShader.cxx
-  TestGlobePageSource.cxx)
+  TestGlobePageSource.cxx
+  TestGlobeLayerLevels.cxx)
 
 create_test_sourcelist(_globe_core_driver_sources GlobeCoreCxxTests.cxx ${globe_core_tests})
 add_executable(GlobeCoreCxxTests ${_globe_core_driver_sources})
