@@ -41,6 +41,9 @@ list(APPEND globe_rendering_tests
   TestGlobeTemporalStability.cxx
   TestGlobeFeatherReach.cxx
   TestGlobeColorMatch.cxx)
+# Insets without walls: the rendered slope across the SRTM insets' borders against the data's.
+list(APPEND globe_rendering_tests
+  TestGlobeInsetWalls.cxx)
 # Geodetic precision (issue 5): 0.5 m data at +-180 degrees and +-80 degrees as at (0, 0).
 list(APPEND globe_rendering_tests
   TestGlobeGeodeticPrecision.cxx)
