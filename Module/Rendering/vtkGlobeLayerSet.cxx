@@ -1413,37 +1413,38 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
         s << "  vec2 uv" << i << " = " << UV(e, p, At(hp), hp) << ";\n";
       }
       s << "  vec2 dx" << i << ", dy" << i << ";\n";
+      // The layer's Jacobian: texture coordinates per radian of lon (jLon) and lat (jLat). A
+      // projected layer's comes from two nearby points, with offsets passed as the low parts
+      // of (lon, lat) (exact steps), and serves both the footprint and the heights' gradient.
+      if (e->Function.empty())
       {
-        // In the grid and screen passes, from the step towards the nearer neighbour along each
-        // axis (globeFootprint, radians of lon and lat) through the layer's Jacobian: a grid
-        // point next to the horizon, or a pixel on a ridge's silhouette, keeps the level of its
-        // own surface where screen derivatives would take that of the long step across to
-        // another one (the horizon's far side, the terrain behind the ridge).
-        s << "#ifdef GLOBE_FOOTPRINT\n";
-        if (e->Function.empty())
-        {
-          s << "  vec2 jLon" << i << " = vec2(1.0 / " << p << "Map.y, 0.0);\n"
-            << "  vec2 jLat" << i << " = vec2(0.0, -1.0 / " << p << "Map.w);\n";
-        }
-        else
-        {
-          const std::string lon = "jLon" + std::to_string(i), lat = "jLat" + std::to_string(i);
-          s << "  vec2 " << lon << " = " << UV(e, p, At(hp, "1e-4"), hp) << " - uv" << i << ";\n"
-            << "  vec2 " << lat << " = " << UV(e, p, At(hp, nullptr, "(lat > 0.0 ? -1e-4 : 1e-4)"), hp)
-            << " - uv" << i << ";\n";
-          if (e->Wraps)
-          {
-            s << "  " << lon << ".x -= floor(" << lon << ".x + 0.5);\n"
-              << "  " << lat << ".x -= floor(" << lat << ".x + 0.5);\n";
-          }
-          s << "  " << lon << " /= 1e-4;\n  " << lat << " /= lat > 0.0 ? -1e-4 : 1e-4;\n";
-        }
-        s << "  dx" << i << " = jLon" << i << " * globeFootprint.x + jLat" << i
-          << " * globeFootprint.y;\n"
-          << "  dy" << i << " = jLon" << i << " * globeFootprint.z + jLat" << i
-          << " * globeFootprint.w;\n"
-          << "#else\n";
+        s << "  vec2 jLon" << i << " = vec2(1.0 / " << p << "Map.y, 0.0);\n"
+          << "  vec2 jLat" << i << " = vec2(0.0, -1.0 / " << p << "Map.w);\n";
       }
+      else
+      {
+        const std::string lon = "jLon" + std::to_string(i), lat = "jLat" + std::to_string(i);
+        s << "  vec2 " << lon << " = " << UV(e, p, At(hp, "1e-4"), hp) << " - uv" << i << ";\n"
+          << "  vec2 " << lat << " = " << UV(e, p, At(hp, nullptr, "(lat > 0.0 ? -1e-4 : 1e-4)"), hp)
+          << " - uv" << i << ";\n";
+        if (e->Wraps)
+        {
+          s << "  " << lon << ".x -= floor(" << lon << ".x + 0.5);\n"
+            << "  " << lat << ".x -= floor(" << lat << ".x + 0.5);\n";
+        }
+        s << "  " << lon << " /= 1e-4;\n  " << lat << " /= lat > 0.0 ? -1e-4 : 1e-4;\n";
+      }
+      // In the grid and screen passes, the footprint is the step towards the nearer neighbour
+      // along each axis (globeFootprint, radians of lon and lat) through the Jacobian: a grid
+      // point next to the horizon, or a pixel on a ridge's silhouette, keeps the level of its
+      // own surface where screen derivatives would take that of the long step across to
+      // another one (the horizon's far side, the terrain behind the ridge).
+      s << "#ifdef GLOBE_FOOTPRINT\n"
+        << "  dx" << i << " = jLon" << i << " * globeFootprint.x + jLat" << i
+        << " * globeFootprint.y;\n"
+        << "  dy" << i << " = jLon" << i << " * globeFootprint.z + jLat" << i
+        << " * globeFootprint.w;\n"
+        << "#else\n";
       s << "  globe_uvDerivatives(uv" << i << ", " << wraps << ", dx" << i << ", dy" << i << ");\n"
         << "#endif\n";
     }
@@ -1500,13 +1501,9 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
         }
         else
         {
-          // Per texture unit (u east, v south), then per radian through the projection's
-          // Jacobian, from offsets passed as the low parts of (lon, lat): exact steps.
+          // Per texture unit (u east, v south), then per radian through the layer's Jacobian.
           s << "    vec2 perUV = vec2((vE - vW) / (2.0 * texel.x), (vS - vN) / (2.0 * texel.y));\n"
-            << "    float eLat = lat > 0.0 ? -1e-4 : 1e-4;\n"
-            << "    vec2 dLon = (" << UV(e, p, At(hp, "1e-4"), hp) << " - uv) / 1e-4;\n"
-            << "    vec2 dLat = (" << UV(e, p, At(hp, nullptr, "eLat"), hp) << " - uv) / eLat;\n"
-            << "    vec2 gi = vec2(dot(perUV, dLon), dot(perUV, dLat));\n";
+            << "    vec2 gi = vec2(dot(perUV, jLon" << n << "), dot(perUV, jLat" << n << "));\n";
         }
         s << "    v = v * " << p << "Value.x + " << p << "Value.y;\n    gi *= " << p
           << "Value.x;\n";
