@@ -918,28 +918,20 @@ double* vtkGlobeLayer::GetGeographicExtent()
   return this->ExtentResult;
 }
 
-void vtkGlobeLayer::GetFeatherBorder(double border[2])
+bool vtkGlobeLayer::GetGroundSize(double size[2])
 {
-  border[0] = border[1] = 0.0;
+  size[0] = size[1] = 0.0;
   const int w = this->GetNumberOfColumns(), h = this->GetNumberOfRows();
   if (!this->Valid || w <= 0 || h <= 0)
   {
-    return;
+    return false;
   }
-  if (!(this->FeatherDistance > 0.0))
-  {
-    border[0] = this->FeatherWidth / w;
-    border[1] = this->FeatherWidth / h;
-    return;
-  }
-  // The raster's size on the ground at its centre, in metres.
-  double width = 0.0, height = 0.0;
   if (this->ModelType == Projected)
   {
     double origin[2], pixel[2];
     this->GetProjectedGeoTransform(origin, pixel);
-    width = pixel[0] * w;
-    height = pixel[1] * h;
+    size[0] = pixel[0] * w;
+    size[1] = pixel[1] * h;
   }
   else
   {
@@ -951,11 +943,74 @@ void vtkGlobeLayer::GetFeatherBorder(double border[2])
     const double phi = vtkMath::RadiansFromDegrees(0.5 * (e[2] + e[3]));
     const double w2 = 1.0 - e2 * std::sin(phi) * std::sin(phi);
     const double normal = a / std::sqrt(w2), meridian = a * (1.0 - e2) / (w2 * std::sqrt(w2));
-    width = vtkMath::RadiansFromDegrees(e[1] - e[0]) * normal * std::cos(phi);
-    height = vtkMath::RadiansFromDegrees(e[3] - e[2]) * meridian;
+    size[0] = vtkMath::RadiansFromDegrees(e[1] - e[0]) * normal * std::cos(phi);
+    size[1] = vtkMath::RadiansFromDegrees(e[3] - e[2]) * meridian;
   }
-  border[0] = width > 0.0 ? std::min(0.5, this->FeatherDistance / width) : 0.0;
-  border[1] = height > 0.0 ? std::min(0.5, this->FeatherDistance / height) : 0.0;
+  return size[0] > 0.0 && size[1] > 0.0;
+}
+
+void vtkGlobeLayer::GetSkirtBorder(double border[2])
+{
+  border[0] = border[1] = 0.0;
+  double size[2];
+  if (this->Role != Height || this->SkirtDistance == 0.0 || !this->GetGroundSize(size))
+  {
+    return;
+  }
+  const double distance = this->SkirtDistance > 0.0
+    ? this->SkirtDistance
+    : std::min(AutomaticSkirtLimit, 0.25 * std::min(size[0], size[1]));
+  border[0] = distance / size[0];
+  border[1] = distance / size[1];
+}
+
+double vtkGlobeLayer::ApplySkirt(const double skirt[3], double uv[2], double outside[2])
+{
+  outside[0] = outside[1] = 0.0;
+  if (uv[0] >= 0.0 && uv[0] <= 1.0 && uv[1] >= 0.0 && uv[1] <= 1.0)
+  {
+    return 1.0;
+  }
+  if (!(skirt[0] > 0.0) && !(skirt[1] > 0.0))
+  {
+    return 0.0;
+  }
+  const double dv = std::max(0.0, std::max(-uv[1], uv[1] - 1.0));
+  bool west = uv[0] < 0.0;
+  double du = west ? -uv[0] : 0.0;
+  if (uv[0] > 1.0)
+  {
+    west = skirt[2] > 0.0 && skirt[2] - uv[0] < uv[0] - 1.0;
+    du = west ? skirt[2] - uv[0] : uv[0] - 1.0;
+  }
+  const double w = (du > 0.0 ? (skirt[0] > 0.0 ? std::max(0.0, 1.0 - du / skirt[0]) : 0.0) : 1.0) *
+    (dv > 0.0 ? (skirt[1] > 0.0 ? std::max(0.0, 1.0 - dv / skirt[1]) : 0.0) : 1.0);
+  uv[0] = west ? 0.0 : std::min(uv[0], 1.0);
+  uv[1] = std::min(std::max(uv[1], 0.0), 1.0);
+  outside[0] = du;
+  outside[1] = dv;
+  return w;
+}
+
+void vtkGlobeLayer::GetFeatherBorder(double border[2])
+{
+  border[0] = border[1] = 0.0;
+  const int w = this->GetNumberOfColumns(), h = this->GetNumberOfRows();
+  double skirt[2], size[2];
+  this->GetSkirtBorder(skirt);
+  if (!this->Valid || w <= 0 || h <= 0 || skirt[0] > 0.0)
+  {
+    return;
+  }
+  if (!(this->FeatherDistance > 0.0))
+  {
+    border[0] = this->FeatherWidth / w;
+    border[1] = this->FeatherWidth / h;
+    return;
+  }
+  this->GetGroundSize(size);
+  border[0] = size[0] > 0.0 ? std::min(0.5, this->FeatherDistance / size[0]) : 0.0;
+  border[1] = size[1] > 0.0 ? std::min(0.5, this->FeatherDistance / size[1]) : 0.0;
 }
 
 void vtkGlobeLayer::GetProjectedGeoTransform(double origin[2], double pixelSize[2])
@@ -2041,6 +2096,15 @@ void vtkGlobeLayer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BlendMode: " << this->GetBlendModeAsString() << "\n";
   os << indent << "FeatherWidth: " << this->FeatherWidth << "\n";
   os << indent << "FeatherDistance: " << this->FeatherDistance << " m\n";
+  os << indent << "SkirtDistance: ";
+  if (this->SkirtDistance < 0.0)
+  {
+    os << "automatic\n";
+  }
+  else
+  {
+    os << this->SkirtDistance << " m\n";
+  }
   os << indent << "ColorMatch: " << this->ColorMatch << "\n";
   os << indent << "ColorMatchWidth: " << this->ColorMatchWidth << "\n";
   os << indent << "ProjectionQualityWeight: " << (this->ProjectionQualityWeight ? "On" : "Off")

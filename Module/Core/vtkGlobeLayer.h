@@ -154,6 +154,14 @@ public:
    *   layer below shows (default: everything is valid).
    * - FeatherWidth: the weight ramps from 0 to 1 over this many texels inside the layer's
    *   border (8 by default; 0 = a hard edge). Borders a global layer wraps across have none.
+   * - SkirtDistance (metres, height layers): the layer's weight falls from 1 at its border to
+   *   0 this far *outside* it, where its edge heights continue (clamped to the edge texels), so
+   *   an inset whose heights disagree with the terrain below by d meets it in a slope of
+   *   d / SkirtDistance outside its data and keeps all of its own (no inward feather then).
+   *   The default, AutomaticSkirt (any negative value), is min(AutomaticSkirtLimit, 1/4 of the
+   *   raster's shorter side on the ground); 0 turns the skirt off (the inward feather below).
+   *   Layers that wrap have none east-west, layers that reach both poles none north-south.
+   *   Documentation/composition.md "Insets without walls".
    * - FeatherDistance (metres, default 0: off): when positive, the ramp spans this distance on
    *   the ground instead, whatever the layer's resolution; so an inset whose heights disagree
    *   with the terrain below by d meets it in a slope of d / FeatherDistance, not a wall. The
@@ -187,11 +195,36 @@ public:
   vtkGetMacro(FeatherWidth, double);
   vtkSetClampMacro(FeatherDistance, double, 0.0, 1e8);
   vtkGetMacro(FeatherDistance, double);
+  vtkSetClampMacro(SkirtDistance, double, AutomaticSkirt, 1e8);
+  vtkGetMacro(SkirtDistance, double);
+  void SetSkirtDistanceToAutomatic() { this->SetSkirtDistance(AutomaticSkirt); }
+  /// SkirtDistance's default (see above), and the longest skirt it gives (metres).
+  static constexpr double AutomaticSkirt = -1.0;
+  static constexpr double AutomaticSkirtLimit = 5000.0;
+  /**
+   * The skirt the composition uses, as fractions of the raster's width and height (east-west,
+   * north-south): (0, 0) for images, for a layer without valid data and where SkirtDistance
+   * is 0; before the borders a wrap or the poles remove.
+   */
+  void GetSkirtBorder(double border[2]);
+  /**
+   * The skirt's rule as the composition applies it (vtkGlobeTerrain, vtkGlobeLayerSet and its
+   * shaders' globe_skirt): skirt = (u, v) widths as GetSkirtBorder gives them after wraps and
+   * poles, and a whole turn of longitude in u for a geographic layer (0 for a projected one).
+   * Inside the raster (uv in [0, 1]^2) the weight is 1; outside it falls linearly with the
+   * distance per axis (a geographic layer's u > 1 counts as west of its west edge when that
+   * is nearer around the turn), and uv moves to the nearest point of the raster, whose
+   * heights continue there; `outside` gets the distance outside per axis (texture units).
+   * 0 beyond the skirt. The continued heights are read coarser with the distance: the level
+   * of detail there takes at least log2 of the distance outside in level-0 texels, so the
+   * edge's detail does not streak across the skirt.
+   */
+  static double ApplySkirt(const double skirt[3], double uv[2], double outside[2]);
   /**
    * The feathered border the composition uses, as fractions of the raster's width and height
    * (east-west, north-south), from FeatherDistance when it is positive, else from
    * FeatherWidth; before the borders a wrap or the poles remove. (0, 0) for a layer without
-   * valid data.
+   * valid data, and for a height layer with a skirt (its ramp lies outside: GetSkirtBorder).
    */
   void GetFeatherBorder(double border[2]);
   vtkSetMacro(ProjectionQualityWeight, bool);
@@ -583,6 +616,7 @@ protected:
   int BlendMode = Replace;
   double FeatherWidth = 8.0;
   double FeatherDistance = 0.0;
+  double SkirtDistance = AutomaticSkirt;
   bool ColorMatch = false;
   double ColorMatchWidth = 64.0;
   bool ProjectionQualityWeight = false;
@@ -593,6 +627,8 @@ protected:
 
   // Results of the last load.
   bool Valid = false;
+  // The raster's size on the ground at its centre (m, east-west and north-south).
+  bool GetGroundSize(double size[2]);
   int NumberOfLoads = 0;
   int RasterWidth = 0; // not Width/Height: Height is a Roles value
   int RasterHeight = 0;

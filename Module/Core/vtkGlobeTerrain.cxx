@@ -31,6 +31,8 @@ struct Composed
   int Width = 0, Height = 0;
   bool Wraps = false;
   double Border[2] = { 0, 0 }; // feather / size per axis (0: no border)
+  double Skirt[2] = { 0, 0 };  // skirt / size per axis, outside the raster (0: none)
+  double Turn = 0.0;           // a whole turn of longitude in u (geographic layers)
   const float* Values = nullptr; // whole layers
   bool Streamed = false;
   int PageSize = 0, PageBorder = 0;
@@ -113,8 +115,9 @@ struct vtkGlobeTerrain::vtkInternals
         c.Geoid = geoid;
       }
       c.Wraps = layer->IsGlobal();
-      double feather[2];
+      double feather[2], skirt[2];
       layer->GetFeatherBorder(feather);
+      layer->GetSkirtBorder(skirt);
       if (layer->GetModelType() == vtkGlobeLayer::Projected)
       {
         c.Projection = vtkSmartPointer<vtkGlobeMapProjection>::New();
@@ -126,12 +129,18 @@ struct vtkGlobeTerrain::vtkInternals
         layer->GetProjectedGeoTransform(c.Origin, c.Pixel);
         c.Border[0] = c.Wraps ? 0.0 : feather[0];
         c.Border[1] = feather[1];
+        c.Skirt[0] = c.Wraps ? 0.0 : skirt[0];
+        c.Skirt[1] = skirt[1];
       }
       else if (layer->GetModelType() == vtkGlobeLayer::Geographic)
       {
         layer->GetGeographicExtent(c.Extent);
+        const bool poles = c.Extent[2] <= -90.0 && c.Extent[3] >= 90.0;
         c.Border[0] = c.Wraps ? 0.0 : feather[0];
-        c.Border[1] = c.Extent[2] <= -90.0 && c.Extent[3] >= 90.0 ? 0.0 : feather[1];
+        c.Border[1] = poles ? 0.0 : feather[1];
+        c.Skirt[0] = c.Wraps ? 0.0 : skirt[0];
+        c.Skirt[1] = poles ? 0.0 : skirt[1];
+        c.Turn = 360.0 / (c.Extent[1] - c.Extent[0]);
       }
       else
       {
@@ -304,7 +313,7 @@ struct vtkGlobeTerrain::vtkInternals
    * (vtkGlobeFootprint.glsl) from the texture coordinates' Jacobian, the polar rule included.
    */
   static double Lod(const Composed& c, double lon, double lat, double u, double v,
-    const double footprint[4], bool grid)
+    const double footprint[4], bool grid, double blur)
   {
     double jLon[2], jLat[2]; // texture coordinates per degree of lon and lat
     if (c.Projection)
@@ -348,6 +357,7 @@ struct vtkGlobeTerrain::vtkInternals
       const double major = std::sqrt(0.5 * t + std::sqrt(std::max(0.25 * t * t - det * det, 0.0)));
       rho = std::max(det / std::max(major, 1e-300), longer * stretch);
     }
+    rho = std::max(rho, blur);
     return std::min(std::max(std::log2(std::max(rho, 1e-300)), 0.0), c.Levels - 1.0);
   }
 
@@ -358,12 +368,20 @@ struct vtkGlobeTerrain::vtkInternals
     value = 0.0;
     weight = 0.0;
     double u, v;
-    if (!UV(c, lon, lat, u, v) || u < 0.0 || u > 1.0 || v < 0.0 || v > 1.0)
+    if (!UV(c, lon, lat, u, v))
     {
       return;
     }
+    // (su, sv): where the heights are read (the raster's nearest point within its skirt).
+    const double skirt[3] = { c.Skirt[0], c.Skirt[1], c.Turn };
+    double at[2] = { u, v }, outside[2];
+    double w = vtkGlobeLayer::ApplySkirt(skirt, at, outside);
+    if (!(w > 0.0))
+    {
+      return;
+    }
+    const double su = at[0], sv = at[1];
     vtkGlobeLayer* layer = c.Layer;
-    double w = 1.0;
     if (c.Border[0] > 0.0)
     {
       w *= std::min(1.0, std::max(0.0, std::min(u, 1.0 - u) / c.Border[0]));
@@ -401,13 +419,17 @@ struct vtkGlobeTerrain::vtkInternals
       return;
     }
     const bool nearest = layer->GetInterpolation() == vtkGlobeLayer::Nearest;
-    const double lod = footprint ? Lod(c, lon, lat, u, v, footprint, grid) : 0.0;
-    const double h = this->Sample(c, u, v, nearest, lod);
+    // In the skirt, the edge is read coarser with the distance (vtkGlobeLayer::ApplySkirt).
+    const double blur = std::max(1.0, std::max(outside[0] * c.Width, outside[1] * c.Height));
+    const double lod = footprint
+      ? Lod(c, lon, lat, u, v, footprint, grid, blur)
+      : std::min(std::log2(blur), c.Levels - 1.0);
+    const double h = this->Sample(c, su, sv, nearest, lod);
     // The GPU's gradient samples one texel away each way: a NaN there voids the sample too.
     const double du = 1.0 / c.Width, dv = 1.0 / c.Height;
-    const double neighbours = this->Sample(c, u + du, v, nearest, lod) +
-      this->Sample(c, u - du, v, nearest, lod) + this->Sample(c, u, v - dv, nearest, lod) +
-      this->Sample(c, u, v + dv, nearest, lod);
+    const double neighbours = this->Sample(c, su + du, sv, nearest, lod) +
+      this->Sample(c, su - du, sv, nearest, lod) + this->Sample(c, su, sv - dv, nearest, lod) +
+      this->Sample(c, su, sv + dv, nearest, lod);
     const double* valid = layer->GetValidRange();
     if (std::isnan(h) || std::isnan(neighbours) || !(h >= valid[0] && h <= valid[1]))
     {

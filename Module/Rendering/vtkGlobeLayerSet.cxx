@@ -69,6 +69,9 @@ struct Entry
   bool Streamed = false;
   bool Prepared = false;
   double Border[4] = { 0, 0, 0, 0 }; // feather u, v (texture coordinates); 1/log(n); unused
+  // Height layers: skirt u, v outside the raster (texture coordinates); a whole turn of
+  // longitude in u (geographic layers; 1e30 for projected ones); unused.
+  double Skirt[4] = { 0, 0, 1e30, 0 };
   // Heights above a geoid: the index of its texture in vtkInternals::Geoids, else -1.
   int Geoid = -1;
   // Per-frame culling (CullLayers): out of the view this frame. The footprint: (lon, lat) in
@@ -228,7 +231,7 @@ struct GeoidTexture
 };
 
 // The footprint CullLayers tests: (lon, lat) at 9 x 9 points (u, v) in [0, 1]^2 over the
-// layer's raster, longitudes unwrapped around the centre's. Left empty, so the layer is never
+// layer's raster (and its skirt), longitudes unwrapped around the centre's. Left empty, so the layer is never
 // culled, for layers that wrap, reach within a degree of a pole, have a point that does not
 // map, or are so large (samples over 5 degrees apart) that the bulge margin grows too loose.
 void SetFootprint(Entry& e, const std::function<bool(double, double, double[2])>& at)
@@ -240,13 +243,16 @@ void SetFootprint(Entry& e, const std::function<bool(double, double, double[2])>
   {
     return;
   }
+  // A height layer's skirt reaches outside its raster.
+  double skirt[2];
+  e.Layer->GetSkirtBorder(skirt);
   double west = 1e9, east = -1e9, south = 90.0, north = -90.0;
   for (int j = 0; j <= n; ++j)
   {
     for (int i = 0; i <= n; ++i)
     {
       double ll[2];
-      if (!at(static_cast<double>(i) / n, static_cast<double>(j) / n, ll))
+      if (!at(-skirt[0] + (1.0 + 2.0 * skirt[0]) * i / n, -skirt[1] + (1.0 + 2.0 * skirt[1]) * j / n, ll))
       {
         e.Footprint.clear();
         return;
@@ -516,8 +522,9 @@ int vtkGlobeLayerSet::Update()
     }
     e.Reported = false;
     e.Active = true;
-    double feather[2];
+    double feather[2], skirt[2];
     layer->GetFeatherBorder(feather);
+    layer->GetSkirtBorder(skirt);
     e.Border[2] = 1.0 / std::log(layer->GetProjectionQualityLimit());
     if (!e.Function.empty())
     {
@@ -525,6 +532,9 @@ int vtkGlobeLayerSet::Update()
       e.Wraps = layer->IsGlobal();
       e.Border[0] = e.Wraps ? 0.0 : feather[0];
       e.Border[1] = feather[1];
+      e.Skirt[0] = e.Wraps ? 0.0 : skirt[0];
+      e.Skirt[1] = skirt[1];
+      e.Skirt[2] = 1e30;
       order.push_back(&e);
       continue;
     }
@@ -536,16 +546,19 @@ int vtkGlobeLayerSet::Update()
     e.Map[2] = extent[3] * deg;
     e.Map[3] = (extent[3] - extent[2]) * deg;
     e.Wraps = layer->IsGlobal();
-    SetFootprint(e, [&extent](double u, double v, double lonLat[2]) {
-      lonLat[0] = extent[0] + (extent[1] - extent[0]) * u;
-      lonLat[1] = extent[3] - (extent[3] - extent[2]) * v;
-      return true;
-    });
     // A global layer wraps in longitude and has no east/west border; one that reaches both
     // poles has no north/south border.
     e.Border[0] = e.Wraps ? 0.0 : feather[0];
     const bool polesCovered = extent[2] <= -90.0 && extent[3] >= 90.0;
     e.Border[1] = polesCovered ? 0.0 : feather[1];
+    e.Skirt[0] = e.Wraps ? 0.0 : skirt[0];
+    e.Skirt[1] = polesCovered ? 0.0 : skirt[1];
+    e.Skirt[2] = 360.0 / (extent[1] - extent[0]);
+    SetFootprint(e, [&extent](double u, double v, double lonLat[2]) {
+      lonLat[0] = extent[0] + (extent[1] - extent[0]) * u;
+      lonLat[1] = std::max(-90.0, std::min(90.0, extent[3] - (extent[3] - extent[2]) * v));
+      return true;
+    });
     order.push_back(&e);
   }
   // Observers of later layers may have removed earlier ones.
@@ -1235,6 +1248,27 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
        "{\n"
        "  return uv.y < -0.5 ? uv : vec2(uv.x - floor(uv.x), uv.y);\n"
        "}\n"
+       // A height layer's weight in its skirt outside the raster (Entry::Skirt), and in uv the
+       // point of the raster whose heights continue there (vtkGlobeTerrain's Skirt).
+       "float globe_skirt(inout vec2 uv, vec4 skirt, out vec2 outside)\n"
+       "{\n"
+       "  outside = vec2(0.0);\n"
+       "  if (uv.x >= 0.0 && uv.x <= 1.0 && uv.y >= 0.0 && uv.y <= 1.0) return 1.0;\n"
+       "  if (!(skirt.x > 0.0 || skirt.y > 0.0) || (uv.x == -1.0 && uv.y == -1.0)) return 0.0;\n"
+       "  float dv = max(0.0, max(-uv.y, uv.y - 1.0));\n"
+       "  bool west = uv.x < 0.0;\n"
+       "  float du = west ? -uv.x : 0.0;\n"
+       "  if (uv.x > 1.0)\n"
+       "  {\n"
+       "    west = skirt.z - uv.x < uv.x - 1.0;\n"
+       "    du = west ? skirt.z - uv.x : uv.x - 1.0;\n"
+       "  }\n"
+       "  float w = (du > 0.0 ? (skirt.x > 0.0 ? max(0.0, 1.0 - du / skirt.x) : 0.0) : 1.0) *\n"
+       "    (dv > 0.0 ? (skirt.y > 0.0 ? max(0.0, 1.0 - dv / skirt.y) : 0.0) : 1.0);\n"
+       "  uv = vec2(west ? 0.0 : min(uv.x, 1.0), clamp(uv.y, 0.0, 1.0));\n"
+       "  outside = vec2(du, dv);\n"
+       "  return w;\n"
+       "}\n"
        "float globe_coverage(vec2 uv, vec4 border)\n"
        "{\n"
        "  if (uv.x < 0.0 || uv.x > 1.0 || uv.y < 0.0 || uv.y > 1.0) return 0.0;\n"
@@ -1332,7 +1366,8 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
       }
       if (role == vtkGlobeLayer::Height)
       {
-        s << "uniform vec2 " << p << "Value;\n"; // texture or pages -> metres: scale, offset
+        s << "uniform vec2 " << p << "Value;\n" // texture or pages -> metres: scale, offset
+          << "uniform vec4 " << p << "Skirt;\n";
       }
       if (list[i]->Match)
       {
@@ -1388,7 +1423,7 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
       << "  float cosLat = cos(lat);\n"
          "  float w;\n  float sumW = 0.0;\n  "
       << type << " sumV = " << zero << ";\n"
-      << "  vec2 uv, uvE, uvN, dx, dy;\n";
+      << "  vec2 uv, uvs, uvE, uvN, dx, dy, outside;\n  float least;\n";
     if (height)
     {
       for (int k : geoids)
@@ -1458,7 +1493,19 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
       s << "  // " << layer->GetRoleAsString() << " layer '" << layer->GetName() << "', "
         << layer->GetBlendModeAsString() << "\n";
       s << "  uv = uv" << n << ";\n  dx = dx" << n << ";\n  dy = dy" << n << ";\n";
-      s << "  w = globe_coverage(uv, " << p << "Border) * " << p << "Style.x;\n";
+      if (height)
+      {
+        // uvs: where the heights are read (the raster's nearest point within its skirt).
+        // In the skirt the edge is read coarser with the distance (vtkGlobeLayer::ApplySkirt).
+        s << "  uvs = uv;\n  w = globe_skirt(uvs, " << p << "Skirt, outside) * globe_coverage(uvs, "
+          << p << "Border) * " << p << "Style.x;\n"
+          << "  least = log2(max(1.0, max(outside.x * " << Size(e, p) << ".x, outside.y * "
+          << Size(e, p) << ".y)));\n";
+      }
+      else
+      {
+        s << "  w = globe_coverage(uv, " << p << "Border) * " << p << "Style.x;\n";
+      }
       if (layer->GetProjectionQualityWeight())
       {
         s << "  if (w > 0.0)\n  {\n"
@@ -1475,10 +1522,14 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
         s << "    vec2 texel = 1.0 / " << Size(e, p) << ";\n";
         if (e->Streamed)
         {
+          // In the skirt, the texel coordinates of the raster's edge (exact: 0 or the size).
+          s << "    vec4 sts = st" << n << ";\n"
+            << "    if (uvs.x != uv.x) sts.xz = vec2(uvs.x * " << p << "Pyramid.x, 0.0);\n"
+            << "    if (uvs.y != uv.y) sts.yw = vec2(uvs.y * " << p << "Pyramid.y, 0.0);\n";
           s << "    float v;\n    vec4 ewns;\n"
             << "    globe_pageHeights(globePagesHeights, " << p << "Table, " << p
-            << "Pyramid, st" << n << ", dx, dy, "
-            << (e->Function.empty() ? "min(globe_heightStretch, 10.0 * cosLat)" : "globe_heightStretch") << ", "
+            << "Pyramid, sts, dx, dy, "
+            << (e->Function.empty() ? "min(globe_heightStretch, 10.0 * cosLat)" : "globe_heightStretch") << ", least, "
             << (layer->GetInterpolation() == vtkGlobeLayer::Nearest ? "true" : "false")
             << ", v, ewns);\n"
             << "    float vE = ewns.x, vW = ewns.y, vN = ewns.z, vS = ewns.w;\n";
@@ -1486,13 +1537,13 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
         else
         {
           // The streamed layers' level (the polar rule included), so both filter alike.
-          s << "    float lod = globe_footprintLodHeights(vec4(" << Size(e, p) << ", 64.0, 0.0), dx, dy, "
-            << (e->Function.empty() ? "min(globe_heightStretch, 10.0 * cosLat)" : "globe_heightStretch") << ");\n"
-            << "    float v = textureLod(" << p << ", uv, lod).r;\n"
-            << "    float vE = textureLod(" << p << ", uv + vec2(texel.x, 0.0), lod).r;\n"
-            << "    float vW = textureLod(" << p << ", uv - vec2(texel.x, 0.0), lod).r;\n"
-            << "    float vN = textureLod(" << p << ", uv - vec2(0.0, texel.y), lod).r;\n"
-            << "    float vS = textureLod(" << p << ", uv + vec2(0.0, texel.y), lod).r;\n";
+          s << "    float lod = max(globe_footprintLodHeights(vec4(" << Size(e, p) << ", 64.0, 0.0), dx, dy, "
+            << (e->Function.empty() ? "min(globe_heightStretch, 10.0 * cosLat)" : "globe_heightStretch") << "), least);\n"
+            << "    float v = textureLod(" << p << ", uvs, lod).r;\n"
+            << "    float vE = textureLod(" << p << ", uvs + vec2(texel.x, 0.0), lod).r;\n"
+            << "    float vW = textureLod(" << p << ", uvs - vec2(texel.x, 0.0), lod).r;\n"
+            << "    float vN = textureLod(" << p << ", uvs - vec2(0.0, texel.y), lod).r;\n"
+            << "    float vS = textureLod(" << p << ", uvs + vec2(0.0, texel.y), lod).r;\n";
         }
         if (e->Function.empty())
         {
@@ -1675,6 +1726,19 @@ void vtkGlobeLayerSet::RequestPages(vtkDoubleArray* footprints, int blockPixels,
           du[0] -= std::floor(du[0] + 0.5);
           dv[0] -= std::floor(dv[0] + 0.5);
         }
+        // A height layer's skirt reads the raster's edge pages, coarser with the distance.
+        double blur = 1.0;
+        if (height)
+        {
+          const double skirt[3] = { e->Skirt[0], e->Skirt[1], e->Function.empty() ? e->Skirt[2] : 0.0 };
+          double at[2] = { uv[0], uv[1] }, outside[2];
+          if ((skirt[0] > 0.0 || skirt[1] > 0.0) && vtkGlobeLayer::ApplySkirt(skirt, at, outside) > 0.0)
+          {
+            uv[0] = at[0];
+            uv[1] = at[1];
+            blur = std::max(1.0, std::max(outside[0] * W, outside[1] * H));
+          }
+        }
         // The block this sample stands for, in texture coordinates (one pixel of margin).
         const double reach = 0.5 * blockPixels + 1.0;
         const double halfU = reach * (std::abs(du[0]) + std::abs(dv[0]));
@@ -1700,7 +1764,7 @@ void vtkGlobeLayerSet::RequestPages(vtkDoubleArray* footprints, int blockPixels,
           const double major = std::sqrt(0.5 * t + std::sqrt(std::max(0.25 * t * t - det * det, 0.0)));
           rho = std::max(det / std::max(major, 1e-300), rho * stretch);
         }
-        const double lod = std::log2(std::max(rho, 1e-30));
+        const double lod = std::log2(std::max(std::max(rho, blur), 1e-30));
         auto ask = [&](double at) {
           // Linear filtering blends floor(lod) and the level above; nearest takes the
           // nearer of the two. Both are asked for either way: the coarser one is the
@@ -2010,6 +2074,7 @@ void vtkGlobeLayerSet::BindTextures(vtkShaderProgram* program, int roles)
           layer->GetValueScale(), layer->GetValueOffset(), map);
         const float value[2] = { static_cast<float>(map[0]), static_cast<float>(map[1]) };
         program->SetUniform2f((p + "Value").c_str(), value);
+        program->SetUniform4f((p + "Skirt").c_str(), f4(e->Skirt).data());
       }
       if (!e->Function.empty())
       {

@@ -32,6 +32,7 @@ vtkSmartPointer<vtkGlobeLayer> Constant(
   auto layer = vtkSmartPointer<vtkGlobeLayer>::New();
   std::vector<float> values(static_cast<size_t>(w) * h, value);
   layer->SetHeightData(w, h, values.data(), west, east, south, north);
+  layer->SetSkirtDistance(0.0); // the inward feather (part D: the skirt)
   return layer;
 }
 
@@ -121,6 +122,7 @@ int TestGlobeFeatherDistance(int, char*[])
   {
     auto utm = vtkGlobeTest::ProjectedHeights(
       32632, 100, 100, 495000.0, 5005000.0, 100.0, [](int, int) { return 1000.0f; });
+    utm->SetSkirtDistance(0.0);
     utm->SetFeatherDistance(2000.0);
     vtkNew<vtkGlobeTerrain> t;
     t->AddLayer(Constant(8, 4, 0.0f, -180.0, 180.0, -90.0, 90.0));
@@ -156,6 +158,89 @@ int TestGlobeFeatherDistance(int, char*[])
       vtkGlobeTest::Printf("a 1 km inset with 20 km: border (%.2f, %.2f) of the raster (at most "
                            "half); a layer without data: (%.0f, %.0f)",
         border[0], border[1], none[0], none[1]));
+  }
+  std::printf("D. Skirts (the default for height layers): the ramp outside the raster:\n");
+  {
+    // A 1000 m geographic inset 1 x 1 degree at 45-46 N, 10-11 E, SkirtDistance 20 km: full
+    // height everywhere inside, 1000 (1 - d / 20 km) at d outside its west (seen around the
+    // turn: u > 1 there), east and south borders, 0 beyond.
+    auto skirted = Constant(100, 100, 1000.0f, 10.0, 11.0, 45.0, 46.0);
+    skirted->SetSkirtDistance(20000.0);
+    vtkNew<vtkGlobeTerrain> t;
+    t->AddLayer(Constant(8, 4, 0.0f, -180.0, 180.0, -90.0, 90.0));
+    t->AddLayer(skirted);
+    t->Update();
+    double inside = 0.0, outside = 0.0;
+    for (double d = 0.0; d <= 25000.0; d += 250.0)
+    {
+      const double expected = 1000.0 * std::max(0.0, 1.0 - d / 20000.0);
+      const double dLon = vtkMath::DegreesFromRadians(d / parallel);
+      const double dLat = vtkMath::DegreesFromRadians(d / meridian);
+      outside = std::max({ outside, std::abs(t->GetHeight(10.0 - dLon, 45.5) - expected),
+        std::abs(t->GetHeight(11.0 + dLon, 45.5) - expected),
+        std::abs(t->GetHeight(10.5, 45.0 - dLat) - expected) });
+      inside = std::max({ inside, std::abs(t->GetHeight(10.0 + dLon, 45.5) - 1000.0),
+        std::abs(t->GetHeight(10.5, 45.0 + std::min(dLat, 0.5)) - 1000.0) });
+    }
+    double border[2], feather[2];
+    skirted->GetSkirtBorder(border);
+    skirted->GetFeatherBorder(feather);
+    Checks.Expect(outside <= 1.0 && inside <= 1e-3 && feather[0] == 0.0 && feather[1] == 0.0,
+      vtkGlobeTest::Printf("20 km skirt: |h - 1000 m (1 - d / 20 km)| <= %.3f m over 0..25 km "
+                           "outside the west, east and south borders; inside |h - 1000| <= %.1e m "
+                           "(no inward feather)",
+        outside, inside));
+
+    // The automatic skirt: min(5 km, a quarter of the shorter side); none for images.
+    vtkNew<vtkGlobeLayer> automatic;
+    std::vector<float> values(100 * 100, 1000.0f);
+    automatic->SetHeightData(100, 100, values.data(), 10.0, 11.0, 45.0, 46.0);
+    automatic->Update();
+    double big[2];
+    automatic->GetSkirtBorder(big);
+    auto tiny = Constant(10, 10, 1000.0f, 10.0, 10.01, 45.0, 45.01);
+    tiny->SetSkirtDistanceToAutomatic();
+    tiny->Update();
+    double small[2];
+    tiny->GetSkirtBorder(small);
+    const double width = vtkMath::RadiansFromDegrees(1.0) * parallel;
+    const double tinyWidth = vtkMath::RadiansFromDegrees(0.01) * parallel;
+    const double tinyHeight = vtkMath::RadiansFromDegrees(0.01) * meridian;
+    vtkNew<vtkGlobeLayer> image;
+    std::vector<unsigned char> rgba(4 * 16, 255);
+    image->SetColorData(4, 4, 4, rgba.data(), 10.0, 11.0, 45.0, 46.0);
+    image->Update();
+    double none[2];
+    image->GetSkirtBorder(none);
+    Checks.Expect(std::abs(big[0] * width - 5000.0) < 1.0 &&
+        std::abs(small[0] * tinyWidth - 0.25 * std::min(tinyWidth, tinyHeight)) < 0.01 &&
+        none[0] == 0.0 && none[1] == 0.0,
+      vtkGlobeTest::Printf("automatic: %.0f m for a 1 degree inset, %.1f m for a 0.01 degree one "
+                           "(a quarter of its %.0f m side); images: (%g, %g)",
+        big[0] * width, small[0] * tinyWidth, std::min(tinyWidth, tinyHeight), none[0], none[1]));
+
+    // A UTM inset (EPSG:32632, 10 x 10 km of 100 m texels) with a 2 km skirt, west of its west
+    // border in map metres.
+    auto utm = vtkGlobeTest::ProjectedHeights(
+      32632, 100, 100, 495000.0, 5005000.0, 100.0, [](int, int) { return 1000.0f; });
+    utm->SetSkirtDistance(2000.0);
+    vtkNew<vtkGlobeTerrain> tu;
+    tu->AddLayer(Constant(8, 4, 0.0f, -180.0, 180.0, -90.0, 90.0));
+    tu->AddLayer(utm);
+    tu->Update();
+    vtkNew<vtkGlobeMapProjection> p;
+    p->SetFromEPSG(32632);
+    double worst = 0.0;
+    for (double d = 0.0; d <= 3000.0; d += 250.0)
+    {
+      double ll[2];
+      p->Inverse(495000.0 - d, 5000000.0, ll);
+      worst = std::max(worst, std::abs(tu->GetHeight(ll[0], ll[1]) - 1000.0 * std::max(0.0, 1.0 - d / 2000.0)));
+    }
+    Checks.Expect(worst <= 1.0,
+      vtkGlobeTest::Printf("UTM, 2 km skirt west of the west border: |h - 1000 m (1 - d / 2 km)| "
+                           "<= %.3f m over 0..3 km",
+        worst));
   }
   return Checks.Result();
 }

@@ -4,17 +4,15 @@
 // seen straight down from 45 km (240 x 240 px, about 85 m per pixel, the insets' 90 m texels):
 // the rendered surface comes from the G-buffer (each pixel's ground point and the mesh's
 // height there), and the slope between neighbouring pixels across the border is measured in a
-// band from 2 km outside the border to 7 km inside. The data's own steepest slope nearby is
-// that of the inset's texels along the same axis, within 10 km inside the border and along the
-// part of the border in view.
-//  - With FeatherDistance 20 km every border's rendered slope is at most the data's.
-//  - With the default feather (8 texels) the 2-degree base and the insets disagree by up to
-//    5.4 km (Everest's north border: the Tibetan plateau against the base's mean): the measure
-//    shows walls at 5 of the 8 borders, so the check can fail.
-// The feather ramps inside the inset, so a long one blends away the inset's own data near its
-// border: Everest's summit lies 1.35 km inside the north border, and the test prints what a
-// 20 km feather leaves of it (which is why 8 texels stay the default; Documentation/
-// composition.md "Insets without walls").
+// band 7 km either side of it. The data's own steepest slope nearby is that of the inset's
+// texels along the same axis, within 10 km inside the border and along the stretch in view.
+//  - The default, an automatic skirt (vtkGlobeLayer::SkirtDistance, 5 km outside these
+//    insets): every border's rendered slope is at most the data's, and the insets keep all
+//    their data (Everest's summit, 1.35 km inside the north border, keeps its height).
+//  - The previous default, 8 texels of feather inside the border: the 2-degree base and the
+//    insets disagree by up to 5.4 km (Everest's north border: the Tibetan plateau against the
+//    base's mean), and the measure shows walls, so the check can fail.
+//  - FeatherDistance 20 km inside: no walls either, but the summit is blended away.
 #include "vtkGlobeMapperTesting.h"
 #include "vtkGlobeRenderingTestHelpers.h"
 #include "vtkGlobeTestHelpers.h"
@@ -30,7 +28,16 @@
 namespace
 {
 constexpr int Size = 240;
-constexpr double Ramp = 20000.0; // FeatherDistance (m)
+constexpr int Configurations = 3;
+
+// 0: the default (automatic skirt); 1: the previous default (8 texels of feather inside);
+// 2: FeatherDistance 20 km inside.
+void Configure(vtkGlobeLayer* inset, int configuration)
+{
+  inset->SetSkirtDistance(configuration == 0 ? vtkGlobeLayer::AutomaticSkirt : 0.0);
+  inset->SetFeatherWidth(8.0);
+  inset->SetFeatherDistance(configuration == 2 ? 20000.0 : 0.0);
+}
 
 // WGS84's radii of curvature at a latitude (degrees): along the parallel, along the meridian.
 void Radii(double lat, double& parallel, double& meridian)
@@ -72,7 +79,9 @@ double DataSlope(vtkGlobeTerrain* data, const double e[4], int cols, int rows, c
     double previous = 0.0;
     for (int k = 0; k <= across; ++k)
     {
-      const int i = edge.Low ? k : n - 1 - k; // texel index across, from the border inwards
+      // Texel index across, from the border inwards (columns count from the west, rows from
+      // the north).
+      const int i = edge.Low == edge.EastWest ? k : n - 1 - k;
       const double lon = e[0] + ((edge.EastWest ? i : j) + 0.5) * dx;
       const double lat = e[3] - ((edge.EastWest ? j : i) + 0.5) * dy;
       const double h = data->GetHeight(lon, lat);
@@ -92,7 +101,7 @@ int TestGlobeInsetWalls(int, char*[])
   vtkGlobeTest::Checklist check;
   vtkGlobeTest::Scene scene(Size, Size, 512);
   scene.AddEarthLayers(true, false);
-  int walls[2] = { 0, 0 }; // edges whose rendered slope exceeds the data's, per feather
+  int walls[Configurations] = { 0, 0, 0 }; // borders steeper than the data, per configuration
   for (int insetIndex : { 1, 2 })
   {
     vtkGlobeLayer* inset = scene.Mapper->GetLayer(insetIndex);
@@ -118,10 +127,10 @@ int TestGlobeInsetWalls(int, char*[])
       scene.Look(camera, target, 30.0);
       double parallel, meridian;
       Radii(lat, parallel, meridian);
-      double rendered[2] = { 0.0, 0.0 }, along = 0.0;
-      for (int f = 0; f < 2; ++f)
+      double rendered[Configurations] = { 0.0, 0.0, 0.0 }, along = 0.0;
+      for (int f = 0; f < Configurations; ++f)
       {
-        inset->SetFeatherDistance(f == 0 ? Ramp : 0.0);
+        Configure(inset, f);
         scene.Render();
         const std::vector<float> g = vtkGlobeTest::ReadTexture(vtkGlobeMapperTesting::GetGBufferTexture(scene.Mapper));
         // Each pixel's ground point: lon, lat (degrees), the mesh's height.
@@ -155,7 +164,7 @@ int TestGlobeInsetWalls(int, char*[])
               continue;
             }
             const double d0 = inside(q0), d1 = inside(q1);
-            if (std::min(d0, d1) < -2000.0 || std::max(d0, d1) > 7000.0)
+            if (std::min(d0, d1) < -7000.0 || std::max(d0, d1) > 7000.0)
             {
               continue;
             }
@@ -169,38 +178,42 @@ int TestGlobeInsetWalls(int, char*[])
           }
         }
       }
-      inset->SetFeatherDistance(0.0);
+      Configure(inset, 0);
       const double own = DataSlope(data, e, cols, rows, edge, along);
-      walls[0] += rendered[0] > own;
-      walls[1] += rendered[1] > own;
+      for (int f = 0; f < Configurations; ++f)
+      {
+        walls[f] += rendered[f] > own;
+      }
       check.Expect(own > 0.1 && rendered[0] > 0.0 && rendered[0] <= own,
-        vtkGlobeTest::Printf("%s, %s border: steepest rendered slope %.3f (FeatherDistance 20 km), "
-                             "%.3f (8 texels); the data's own within 10 km: %.3f",
-          name.c_str(), edge.Name, rendered[0], rendered[1], own));
+        vtkGlobeTest::Printf("%s, %s border: steepest rendered slope %.3f (default), %.3f (8 "
+                             "texels inside), %.3f (20 km inside); the data's own within 10 km: %.3f",
+          name.c_str(), edge.Name, rendered[0], rendered[1], rendered[2], own));
     }
   }
-  // What a 20 km ramp costs where the data come close to the border.
+  // What each keeps of the data near the border.
   {
     vtkGlobeLayer* everest = scene.Mapper->GetLayer(2);
     vtkNew<vtkGlobeTerrain> terrain;
     terrain->AddLayer(scene.Mapper->GetLayer(0));
     terrain->AddLayer(everest);
     const double summit[2] = { 86.925278, 27.988056 };
-    double h[2];
-    for (int f = 0; f < 2; ++f)
+    double h[Configurations];
+    for (int f = 0; f < Configurations; ++f)
     {
-      everest->SetFeatherDistance(f == 0 ? 0.0 : Ramp);
+      Configure(everest, f);
       terrain->Update();
       h[f] = terrain->GetHeight(summit[0], summit[1]);
     }
-    everest->SetFeatherDistance(0.0);
-    std::printf("  Everest's summit (1.35 km inside the north border): %.0f m with 8 texels, %.0f m "
-                "with FeatherDistance 20 km\n",
-      h[0], h[1]);
+    Configure(everest, 0);
+    const double data = h[1]; // 8 texels end 0.72 km inside: the data themselves
+    check.Expect(std::abs(h[0] - data) < 0.01,
+      vtkGlobeTest::Printf("Everest's summit (1.35 km inside the north border): %.0f m (default), "
+                           "%.0f m (8 texels inside), %.0f m (20 km inside)",
+        h[0], h[1], h[2]));
   }
   check.Expect(walls[0] == 0 && walls[1] >= 2,
-    vtkGlobeTest::Printf("borders steeper than the data: %d with FeatherDistance 20 km, %d with "
-                         "8 texels (the walls the measure must see)",
-      walls[0], walls[1]));
+    vtkGlobeTest::Printf("borders steeper than the data: %d (default), %d (8 texels inside: the "
+                         "walls the measure must see), %d (20 km inside)",
+      walls[0], walls[1], walls[2]));
   return check.Result();
 }

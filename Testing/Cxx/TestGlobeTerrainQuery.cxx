@@ -13,9 +13,9 @@
 //     compare its geodetic height with the query at the same (lon, lat): within the bound
 //     vtkGlobeTerrain.h states (vtkGlobeTest::CheckTerrain computes it per pixel), 0 pixels
 //     beyond it, no NaN. Scenes, each looking about 45 degrees down: 1 km above Rainier's flank
-//     with the EGM96 datum; the inset's feathered western border (partial weights over the
+//     with the EGM96 datum; the inset's western border (partial weights of its skirt over the
 //     2-degree relief) from 1 km; Average and Add layers (with opacities) from 2 km; a 1000 m
-//     step inset whose border is a 5 km ramp (FeatherDistance) from 2 km. And no
+//     step inset whose skirt is a 5 km ramp outside its border (the default) from 2 km. And no
 //     bias: the median of the signed differences over all pixels within 5 m (the per-pixel
 //     bound is loose on rough terrain, tens of metres where the grid samples mipmapped data;
 //     a systematic error such as EGM96's N left out, 19 m here, is not). Measured: medians
@@ -143,6 +143,7 @@ void PartRules()
   expect(terrain, 10.5, 20.5, 100.0, "a global Replace layer over 0");
   // An inset of 64 x 64 texels over one degree, feathered over 8 texels.
   auto inset = Constant(1000.0f, 64, 10, 11, 20, 21);
+  inset->SetSkirtDistance(0.0); // the inward feather (the skirt: the step inset below)
   terrain->AddLayer(inset);
   expect(terrain, 10.5, 20.5, 1000.0, "inside an inset");
   expect(terrain, 10.0 + 2.0 / 64.0, 20.5, 100.0 + 0.25 * 900.0, "2 of 8 feathered texels in");
@@ -254,7 +255,7 @@ void PartGPU()
     { "the inset's feathered western border from 1 km", 0, { -122.006, 46.70, 1000.0 },
       { -121.996, 46.705 } },
     { "Average and Add layers, 2 km", 1, { 10.45, 20.40, 2000.0 }, { 10.465, 20.415 } },
-    { "a 1000 m step inset with FeatherDistance 5 km, its west border from 2 km", 2,
+    { "a 1000 m step inset with its 5 km skirt, its west border from 2 km", 2,
       { 9.97, 45.45, 2000.0 }, { 10.02, 45.5 } },
   };
   for (const Case& c : cases)
@@ -267,13 +268,12 @@ void PartGPU()
     }
     else if (c.Layers == 2)
     {
-      // 0 m everywhere and 1000 m over 10..11 E, 45..46 N (0.01 degree texels), its border a
-      // 5 km ramp on the ground (vtkGlobeLayer::FeatherDistance; 8 texels would be 6.2 km).
+      // 0 m everywhere and 1000 m over 10..11 E, 45..46 N (0.01 degree texels), its skirt a
+      // 5 km ramp on the ground outside its border (vtkGlobeLayer::SkirtDistance's default).
       std::vector<float> zero(8 * 4, 0.0f), step(100 * 100, 1000.0f);
       vtkNew<vtkGlobeLayer> base, inset;
       base->SetHeightData(8, 4, zero.data(), -180, 180, -90, 90);
       inset->SetHeightData(100, 100, step.data(), 10, 11, 45, 46);
-      inset->SetFeatherDistance(5000.0);
       scene.Mapper->AddLayer(base);
       scene.Mapper->AddLayer(inset);
     }

@@ -59,9 +59,10 @@ void globe_pageHeightsAt(sampler2DArray atlas, sampler2D table, vec4 pyramid, ve
 }
 
 void globe_pageHeights(sampler2DArray atlas, sampler2D table, vec4 pyramid, vec4 t,
-  vec2 dx, vec2 dy, float stretch, bool nearest, out float v, out vec4 ewns)
+  vec2 dx, vec2 dy, float stretch, float least, bool nearest, out float v, out vec4 ewns)
 {
-  float lod = globe_footprintLodHeights(pyramid, dx, dy, stretch);
+  float lod = clamp(max(globe_footprintLodHeights(pyramid, dx, dy, stretch), least), 0.0,
+    pyramid.z - 1.0);
   if (nearest)
   {
     globe_pageHeightsAt(atlas, table, pyramid, t, int(floor(lod + 0.5)), true, v, ewns);
