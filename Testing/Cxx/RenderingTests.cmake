@@ -44,6 +44,10 @@ list(APPEND globe_rendering_tests
 # Insets without walls: the rendered slope across the SRTM insets' borders against the data's.
 list(APPEND globe_rendering_tests
   TestGlobeInsetWalls.cxx)
+# The sky from the ground and the limb from space (the atmosphere effect), with baselines.
+list(APPEND globe_rendering_tests
+  TestGlobeSky.cxx
+  TestGlobeLimb.cxx)
 # Geodetic precision (issue 5): 0.5 m data at +-180 degrees and +-80 degrees as at (0, 0).
 list(APPEND globe_rendering_tests
   TestGlobeGeodeticPrecision.cxx)
