@@ -207,7 +207,14 @@ struct Scene
     this->Renderer->AddActor(this->Actor);
     this->Renderer->SetBackground(0.0, 0.0, 0.0);
     this->Window->SetOffScreenRendering(1);
-    this->Window->SetMultiSamples(0);
+    // VTK's anti-aliasing variants of the scenes (CTest's AntiAliased.* and Multisampled.*):
+    // VTKGLOBE_TEST_FXAA=1 turns the renderer's FXAA on, VTKGLOBE_TEST_MULTISAMPLES=n asks the
+    // window for n samples. Both change colour only, so the scenes' terrain checks (on depth)
+    // and baselines must hold.
+    const char* samples = std::getenv("VTKGLOBE_TEST_MULTISAMPLES");
+    this->Window->SetMultiSamples(samples ? std::atoi(samples) : 0);
+    const char* fxaa = std::getenv("VTKGLOBE_TEST_FXAA");
+    this->Renderer->SetUseFXAA(fxaa && std::string(fxaa) == "1");
     this->Window->SetSize(width, height);
     this->Window->AddRenderer(this->Renderer);
     if (Streamed())
