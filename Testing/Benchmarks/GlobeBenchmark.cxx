@@ -93,6 +93,7 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
+#include "vtkColorTransferFunction.h"
 #include "vtkFloatArray.h"
 #include "vtkGlobeClippingRange.h"
 #include "vtkGlobeCompositePass.h"
@@ -173,7 +174,7 @@ struct Options
   std::vector<int> Grids = { 128, 256, 1024 }; // besides the default 512
   std::vector<double> GridFactors = { 0.5, 1.0, 2.0 };
   std::vector<std::string> Effects = { "unlit", "+night lights", "+specular water",
-    "+atmosphere", "+graticule", "+contours", "all" };
+    "+atmosphere", "+graticule", "+contours", "+height colours", "all" };
   std::vector<std::string> Depth = { "default, VTK clipping", "logarithmic, policy",
     "logarithmic, VTK clipping" };
   std::vector<std::string> Compositions = { "colour nearest", "feather 0", "feather 32",
@@ -702,6 +703,7 @@ private:
   std::vector<vtkGlobeLayer*> Layers;
   vtkGlobeLayer* Color = nullptr;
   std::map<vtkGlobeLayer*, double> DefaultFeather;
+  vtkNew<vtkColorTransferFunction> Tint; // "+height colours": a hypsometric tint
   vtkSmartPointer<vtkTexture> Imagery;
   vtkSmartPointer<vtkActor> SatelliteActor;
   vtkNew<vtkGlobeLayer> MarkerLayer;
@@ -739,6 +741,15 @@ void Benchmark::Prepare()
   }
   vtkGlobeTest::AddWaterMaskAndNightLights(mapper, mapper->GetLayer(0));
   this->Layers = vtkGlobeTest::HeightLayers(mapper);
+  // The demo's atlas tint (Examples/Cxx/GlobeEarth.cxx, snow line 3,300 m).
+  const double stops[][4] = { { -6000, 0.05, 0.15, 0.45 }, { -150, 0.45, 0.70, 0.90 },
+    { 0, 0.12, 0.42, 0.20 }, { 500, 0.45, 0.62, 0.30 }, { 1500, 0.85, 0.78, 0.45 },
+    { 2100, 0.62, 0.42, 0.25 }, { 3000, 0.58, 0.52, 0.48 }, { 3300, 0.95, 0.95, 0.95 },
+    { 9000, 1.0, 1.0, 1.0 } };
+  for (const auto& stop : stops)
+  {
+    this->Tint->AddRGBPoint(stop[0], stop[1], stop[2], stop[3]);
+  }
   for (vtkGlobeLayer* layer : this->Layers)
   {
     this->DefaultFeather[layer] = layer->GetFeatherWidth();
@@ -781,9 +792,11 @@ void Benchmark::ResetDefaults()
   m->SetAtmosphere(false);
   m->SetGraticule(false);
   m->SetContours(false);
+  m->GetCompositePass()->SetHeightColors(nullptr);
   for (vtkGlobeLayer* layer : this->Layers)
   {
     layer->SetFeatherWidth(this->DefaultFeather[layer]);
+    layer->SetSkirtDistanceToAutomatic();
     layer->SetProjectionQualityWeight(false);
     if (layer->GetRole() == vtkGlobeLayer::Color)
     {
@@ -863,10 +876,19 @@ std::vector<Setting> Benchmark::Settings()
                         }
                       });
                     } });
-    composition.push_back({ "composition", "feather 0",
-      [each] { each([](vtkGlobeLayer* l) { l->SetFeatherWidth(0.0); }); } });
-    composition.push_back({ "composition", "feather 32",
-      [each] { each([](vtkGlobeLayer* l) { l->SetFeatherWidth(32.0); }); } });
+    // Texel feathers inside every border, height insets included (their default is a skirt).
+    composition.push_back({ "composition", "feather 0", [each] {
+                      each([](vtkGlobeLayer* l) {
+                        l->SetSkirtDistance(0.0);
+                        l->SetFeatherWidth(0.0);
+                      });
+                    } });
+    composition.push_back({ "composition", "feather 32", [each] {
+                      each([](vtkGlobeLayer* l) {
+                        l->SetSkirtDistance(0.0);
+                        l->SetFeatherWidth(32.0);
+                      });
+                    } });
     // Kooima's weight on the colour layers only: on height layers it makes the surface depend
     // on the view (an inset's weight drops below 1 where its texels are stretched).
     composition.push_back({ "composition", "colour projection weight", [each] {
@@ -895,7 +917,10 @@ std::vector<Setting> Benchmark::Settings()
     }
     else
     {
-      apply = [m, e, all] {
+      vtkColorTransferFunction* tint = this->Tint;
+      apply = [m, e, all, tint] {
+        m->GetCompositePass()->SetHeightColors(all || e == "+height colours" ? tint : nullptr);
+        m->GetCompositePass()->SetHeightColorOpacity(0.55);
         m->SetNightLights(all || e == "+night lights");
         m->SetSpecularWater(all || e == "+specular water");
         m->SetAtmosphere(all || e == "+atmosphere");
@@ -918,7 +943,8 @@ std::string Benchmark::HeightSignature()
   {
     if (layer->GetRole() == vtkGlobeLayer::Height)
     {
-      key += Format(layer->GetFeatherWidth(), "%g") + ";";
+      key += Format(layer->GetFeatherWidth(), "%g") + "," + Format(layer->GetFeatherDistance(), "%g") +
+        "," + Format(layer->GetSkirtDistance(), "%g") + ";";
     }
   }
   return key;
@@ -1455,11 +1481,14 @@ void Benchmark::MeasureRegistration(SceneDef& scene, const Reference& ref, Accur
   m->SetAtmosphere(false);
   m->SetGraticule(false);
   m->SetContours(false);
+  vtkSmartPointer<vtkScalarsToColors> tint = m->GetCompositePass()->GetHeightColors();
+  m->GetCompositePass()->SetHeightColors(nullptr);
   m->AddLayer(this->MarkerLayer);
   this->SetPose(scene.A, this->Policy);
   this->RenderAt(scene.A);
   const std::vector<unsigned char> rgb = vtkGlobeTest::ReadPixels(this->Scene.Window);
   m->RemoveLayer(this->MarkerLayer);
+  m->GetCompositePass()->SetHeightColors(tint);
   m->SetLighting(effects[0]);
   m->SetNightLights(effects[1]);
   m->SetSpecularWater(effects[2]);

@@ -51,14 +51,8 @@ int TestGlobeEffects(int argc, char* argv[])
   auto world = vtkGlobeTest::FileLayer("earth/world.tif", false);
   scene.Mapper->AddLayer(world);
   // The sun over 20 N, 10 E: the night side is in view from the west.
-  vtkNew<vtkLight> sun;
   double sunPosition[3];
-  const double sunLLH[3] = { 10.0, 20.0, 1.5e11 };
-  scene.Body->GeodeticToCartesian(sunLLH, sunPosition);
-  sun->SetPosition(sunPosition);
-  sun->SetFocalPoint(0, 0, 0);
-  sun->SetLightTypeToSceneLight();
-  scene.Renderer->AddLight(sun);
+  vtkLight* sun = vtkGlobeTest::AddSunOver(scene, 10.0, 20.0, sunPosition);
   const double camera[3] = { -40.0, 25.0, 2.2e7 }, target[3] = { -40.0, 25.0, 0.0 };
   scene.Look(camera, target, 30.0);
   scene.Render();

@@ -36,15 +36,6 @@ vtkSmartPointer<vtkGlobeLayer> Constant(
   return layer;
 }
 
-// WGS84's radii of curvature at a latitude (degrees): along the parallel, along the meridian.
-void Radii(double lat, double& parallel, double& meridian)
-{
-  const double a = 6378137.0, f = 1.0 / 298.257223563, e2 = f * (2.0 - f);
-  const double phi = vtkMath::RadiansFromDegrees(lat);
-  const double w2 = 1.0 - e2 * std::sin(phi) * std::sin(phi);
-  parallel = a / std::sqrt(w2) * std::cos(phi);
-  meridian = a * (1.0 - e2) / (w2 * std::sqrt(w2));
-}
 
 // The worst |h - expected| over distances 0..25 km inside a border, and the distance at which
 // the height first reaches 999 m (the ramp's length).
@@ -85,7 +76,7 @@ int TestGlobeFeatherDistance(int, char*[])
   terrain->AddLayer(base);
   terrain->AddLayer(inset);
   double parallel, meridian;
-  Radii(45.5, parallel, meridian);
+  vtkGlobeTest::WGS84Radii(45.5, parallel, meridian);
   auto west = [&](double d) {
     return terrain->GetHeight(10.0 + vtkMath::DegreesFromRadians(d / parallel), 45.5);
   };

@@ -39,15 +39,6 @@ void Configure(vtkGlobeLayer* inset, int configuration)
   inset->SetFeatherDistance(configuration == 2 ? 20000.0 : 0.0);
 }
 
-// WGS84's radii of curvature at a latitude (degrees): along the parallel, along the meridian.
-void Radii(double lat, double& parallel, double& meridian)
-{
-  const double a = 6378137.0, f = 1.0 / 298.257223563, e2 = f * (2.0 - f);
-  const double phi = vtkMath::RadiansFromDegrees(lat);
-  const double w2 = 1.0 - e2 * std::sin(phi) * std::sin(phi);
-  parallel = a / std::sqrt(w2) * std::cos(phi);
-  meridian = a * (1.0 - e2) / (w2 * std::sqrt(w2));
-}
 
 struct Edge
 {
@@ -66,7 +57,7 @@ double DataSlope(vtkGlobeTerrain* data, const double e[4], int cols, int rows, c
 {
   const double dx = (e[1] - e[0]) / cols, dy = (e[3] - e[2]) / rows;
   double parallel, meridian;
-  Radii(0.5 * (e[2] + e[3]), parallel, meridian);
+  vtkGlobeTest::WGS84Radii(0.5 * (e[2] + e[3]), parallel, meridian);
   const double stepAcross = edge.EastWest ? vtkMath::RadiansFromDegrees(dx) * parallel
                                           : vtkMath::RadiansFromDegrees(dy) * meridian;
   const double stepAlong = edge.EastWest ? vtkMath::RadiansFromDegrees(dy) * meridian
@@ -126,7 +117,7 @@ int TestGlobeInsetWalls(int, char*[])
       const double camera[3] = { lon, lat, 45000.0 }, target[3] = { lon, lat, 0.0 };
       scene.Look(camera, target, 30.0);
       double parallel, meridian;
-      Radii(lat, parallel, meridian);
+      vtkGlobeTest::WGS84Radii(lat, parallel, meridian);
       double rendered[Configurations] = { 0.0, 0.0, 0.0 }, along = 0.0;
       for (int f = 0; f < Configurations; ++f)
       {

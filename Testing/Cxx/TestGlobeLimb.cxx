@@ -24,26 +24,14 @@ int TestGlobeLimb(int argc, char* argv[])
   constexpr int W = 300, H = 225;
   vtkGlobeTest::Scene scene(W, H, 256);
   scene.AddEarthLayers(true, true);
-  vtkNew<vtkLight> sun;
   double sunPosition[3];
-  const double sunLLH[3] = { 10.0, 20.0, 1.5e11 };
-  scene.Body->GeodeticToCartesian(sunLLH, sunPosition);
-  sun->SetPosition(sunPosition);
-  sun->SetFocalPoint(0, 0, 0);
-  sun->SetLightTypeToSceneLight();
-  scene.Renderer->AddLight(sun);
+  vtkGlobeTest::AddSunOver(scene, 10.0, 20.0, sunPosition);
   const double camera[3] = { -40.0, 25.0, 2.2e7 }, target[3] = { -40.0, 25.0, 0.0 };
   scene.Look(camera, target, 30.0);
 
   std::vector<unsigned char> rgb[2];
   std::vector<float> depth[2];
-  for (int on = 0; on < 2; ++on)
-  {
-    scene.Mapper->SetAtmosphere(on == 1);
-    scene.Render();
-    rgb[on] = vtkGlobeTest::ReadPixels(scene.Window);
-    depth[on] = vtkGlobeTest::ReadDepth(scene.Window);
-  }
+  vtkGlobeTest::RenderWithoutAndWithAtmosphere(scene, rgb, depth);
   check.Expect(depth[0] == depth[1], "the atmosphere changes no depth");
 
   // The disc's centre and radius in pixels, from the covered pixels.

@@ -58,13 +58,7 @@ int TestGlobeSky(int argc, char* argv[])
 
   std::vector<unsigned char> rgb[2];
   std::vector<float> depth[2];
-  for (int on = 0; on < 2; ++on)
-  {
-    scene.Mapper->SetAtmosphere(on == 1);
-    scene.Render();
-    rgb[on] = vtkGlobeTest::ReadPixels(scene.Window);
-    depth[on] = vtkGlobeTest::ReadDepth(scene.Window);
-  }
+  vtkGlobeTest::RenderWithoutAndWithAtmosphere(scene, rgb, depth);
   check.Expect(depth[0] == depth[1], "the atmosphere changes no depth");
   auto luminance = [](const unsigned char* p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; };
 

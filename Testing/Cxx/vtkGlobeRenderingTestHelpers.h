@@ -28,6 +28,7 @@
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkLight.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkTextureObject.h"
@@ -440,6 +441,33 @@ inline std::vector<unsigned char> ReadPixels(vtkRenderWindow* window)
   std::vector<unsigned char> rgb(data, data + 3 * size[0] * size[1]);
   delete[] data;
   return rgb;
+}
+
+/// A sun for the scene: a scene light 1.5e11 m out above the geodetic point (lon, lat)
+/// (degrees), shining at the body's centre; the renderer holds it.
+inline vtkLight* AddSunOver(Scene& scene, double lon, double lat, double position[3])
+{
+  vtkNew<vtkLight> sun;
+  const double llh[3] = { lon, lat, 1.5e11 };
+  scene.Body->GeodeticToCartesian(llh, position);
+  sun->SetPosition(position);
+  sun->SetFocalPoint(0, 0, 0);
+  sun->SetLightTypeToSceneLight();
+  scene.Renderer->AddLight(sun);
+  return sun;
+}
+
+/// The scene rendered without ([0]) and with ([1]) the atmosphere: pixels and depth.
+inline void RenderWithoutAndWithAtmosphere(
+  Scene& scene, std::vector<unsigned char> rgb[2], std::vector<float> depth[2])
+{
+  for (int on = 0; on < 2; ++on)
+  {
+    scene.Mapper->SetAtmosphere(on == 1);
+    scene.Render();
+    rgb[on] = ReadPixels(scene.Window);
+    depth[on] = ReadDepth(scene.Window);
+  }
 }
 
 /// Along-ray error of a depth-reconstructed point at eye distance z: 4 steps of a 24-bit depth

@@ -126,6 +126,17 @@ inline double Norm(const double a[3])
   return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
 }
 
+/// WGS84's radii of curvature at a latitude (degrees): along the parallel (the prime
+/// vertical's times cos(lat)) and along the meridian, in metres.
+inline void WGS84Radii(double lat, double& parallel, double& meridian)
+{
+  const double a = 6378137.0, f = 1.0 / 298.257223563, e2 = f * (2.0 - f);
+  const double phi = lat * 3.14159265358979323846 / 180.0;
+  const double w2 = 1.0 - e2 * std::sin(phi) * std::sin(phi);
+  parallel = a / std::sqrt(w2) * std::cos(phi);
+  meridian = a * (1.0 - e2) / (w2 * std::sqrt(w2));
+}
+
 /// Angle between two vectors of any length, accurate for tiny angles: atan2(|a x b|, a . b).
 inline double Angle(const double a[3], const double b[3])
 {
