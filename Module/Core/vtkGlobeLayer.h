@@ -625,10 +625,11 @@ protected:
   int Streaming = StreamingAuto;
   int StreamingThreshold = 8192;
 
-  // Results of the last load.
-  bool Valid = false;
   // The raster's size on the ground at its centre (m, east-west and north-south).
   bool GetGroundSize(double size[2]);
+
+  // Results of the last load.
+  bool Valid = false;
   int NumberOfLoads = 0;
   int RasterWidth = 0; // not Width/Height: Height is a Roles value
   int RasterHeight = 0;

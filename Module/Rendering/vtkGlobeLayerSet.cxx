@@ -230,8 +230,8 @@ struct GeoidTexture
   vtkMTimeType UploadedTime = 0;
 };
 
-// The footprint CullLayers tests: (lon, lat) at 9 x 9 points (u, v) in [0, 1]^2 over the
-// layer's raster (and its skirt), longitudes unwrapped around the centre's. Left empty, so the layer is never
+// The footprint CullLayers tests: (lon, lat) at 9 x 9 points (u, v) over the layer's raster
+// and its skirt, longitudes unwrapped around the centre's. Left empty, so the layer is never
 // culled, for layers that wrap, reach within a degree of a pole, have a point that does not
 // map, or are so large (samples over 5 degrees apart) that the bulge margin grows too loose.
 void SetFootprint(Entry& e, const std::function<bool(double, double, double[2])>& at)
@@ -252,7 +252,9 @@ void SetFootprint(Entry& e, const std::function<bool(double, double, double[2])>
     for (int i = 0; i <= n; ++i)
     {
       double ll[2];
-      if (!at(-skirt[0] + (1.0 + 2.0 * skirt[0]) * i / n, -skirt[1] + (1.0 + 2.0 * skirt[1]) * j / n, ll))
+      const double u = -skirt[0] + (1.0 + 2.0 * skirt[0]) * i / n;
+      const double v = -skirt[1] + (1.0 + 2.0 * skirt[1]) * j / n;
+      if (!at(u, v, ll))
       {
         e.Footprint.clear();
         return;

@@ -142,7 +142,8 @@ set(globe_streamed_tests
   TestGlobeSharedDepth
   TestGlobeProjectedLayers
   TestGlobeNorthPole
-  TestGlobeTemporalStability)
+  TestGlobeTemporalStability
+  TestGlobeInsetWalls)
 foreach (test_name IN LISTS globe_streamed_tests)
   add_test(NAME "Streamed.${test_name}"
     COMMAND GlobeRenderingCxxTests "${test_name}"
