@@ -26,6 +26,8 @@
 #include "vtkGlobeRenderingTestHelpers.h"
 #include "vtkGlobeTestHelpers.h"
 
+#include "vtkGlobeCompositePass.h"
+#include "vtkGlobeGridPass.h"
 #include "vtkGlobeLayer.h"
 #include "vtkGlobeLayerSet.h"
 #include "vtkGlobeMapper.h"
@@ -203,7 +205,12 @@ struct Paired
 {
   double StreamedMs = 0, IncoreMs = 0, Ratio = 0;
   double StreamedCpuMs = 0, IncoreCpuMs = 0, CpuRatio = 0;
+  // Median steady GPU time per stage (the mapper's timer queries): PGM, height, raster,
+  // composite, reduction; [0] streamed, [1] in-core. -1 where the driver gave none.
+  double Stages[2][5] = { { -1, -1, -1, -1, -1 }, { -1, -1, -1, -1, -1 } };
 };
+
+const char* const StageNames[5] = { "pgm", "height", "raster", "composite", "reduction" };
 
 double CpuMs()
 {
@@ -220,10 +227,12 @@ Paired FlyPaired(const std::string& data, const Planet& planet, int frames, int 
   AddLayers(streamed.Mapper, data, planet, true);
   AddLayers(incore.Mapper, data, planet, false);
   std::vector<double> a, b, ca, cb;
+  std::vector<double> stages[2][5];
   for (int i = 0; i < frames; ++i)
   {
     for (vtkGlobeTest::Scene* scene : { &streamed, &incore })
     {
+      const int k = scene == &streamed ? 0 : 1;
       Place(*scene, i, frames);
       const double cpu = CpuMs();
       const auto start = std::chrono::steady_clock::now();
@@ -232,6 +241,15 @@ Paired FlyPaired(const std::string& data, const Planet& planet, int frames, int 
       (scene == &streamed ? a : b)
         .push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
       (scene == &streamed ? ca : cb).push_back(CpuMs() - cpu);
+      // From the most recent frame whose timer queries are done, hence a frame or two late:
+      // steady frames only, where that does not matter.
+      vtkGlobeMapper* m = scene->Mapper;
+      const double s[5] = { m->GetGridPass()->GetPGMTime(), m->GetGridPass()->GetHeightTime(),
+        m->GetRasterTime(), m->GetCompositePass()->GetCompositeTime(), m->GetReductionTime() };
+      for (int j = 0; j < 5; ++j)
+      {
+        stages[k][j].push_back(1e3 * s[j]);
+      }
     }
   }
   auto ratio = [frames](const std::vector<double>& x, const std::vector<double>& y) {
@@ -250,6 +268,16 @@ Paired FlyPaired(const std::string& data, const Planet& planet, int frames, int 
   p.StreamedCpuMs = Median(Steady(ca, frames));
   p.IncoreCpuMs = Median(Steady(cb, frames));
   p.CpuRatio = ratio(ca, cb);
+  for (int k = 0; k < 2; ++k)
+  {
+    for (int j = 0; j < 5; ++j)
+    {
+      std::vector<double> steady = Steady(stages[k][j], frames);
+      steady.erase(std::remove_if(steady.begin(), steady.end(), [](double v) { return v < 0; }),
+        steady.end());
+      p.Stages[k][j] = steady.empty() ? -1.0 : Median(steady);
+    }
+  }
   return p;
 }
 } // namespace
@@ -326,6 +354,13 @@ int main(int argc, char* argv[])
     std::printf("%-16s first %7.0f ms, steady %6.1f ms, peak RSS %6.0f MiB, GPU %6.1f MiB\n",
       r.Label.c_str(), r.FirstMs, r.SteadyMs, r.PeakRSS, r.PeakGPU);
   };
+  auto printStages = [](const Paired& q) {
+    std::printf("  GPU stages, steady medians (ms), streamed / in-core:");
+    for (int j = 0; j < 5; ++j)
+    {
+      std::printf(" %s %.1f / %.1f%s", StageNames[j], q.Stages[0][j], q.Stages[1][j], j < 4 ? "," : "\n");
+    }
+  };
   for (const Planet& p : planets)
   {
     if (interleavedOnly)
@@ -334,6 +369,7 @@ int main(int argc, char* argv[])
       std::printf("%d wide, interleaved: steady %.1f ms streamed, %.1f ms in-core, median ratio "
                   "%.3f; CPU time %.1f ms / %.1f ms, ratio %.3f\n",
         p.Width, q.StreamedMs, q.IncoreMs, q.Ratio, q.StreamedCpuMs, q.IncoreCpuMs, q.CpuRatio);
+      printStages(q);
       continue;
     }
     std::vector<std::vector<unsigned char>> streamedImages, incoreImages;
@@ -368,6 +404,7 @@ int main(int argc, char* argv[])
       std::printf("  interleaved with in-core: steady %.1f ms streamed, %.1f ms in-core, "
                   "median ratio %.3f; CPU time %.1f ms / %.1f ms, ratio %.3f\n",
         q.StreamedMs, q.IncoreMs, q.Ratio, q.StreamedCpuMs, q.IncoreCpuMs, q.CpuRatio);
+      printStages(q);
     }
     std::printf("  %6s %10s %8s %7s %7s %9s %8s %8s %9s %6s\n", "frames", "height m", "ms",
       "loaded", "evicted", "uploaded", "RSS", "GPU", "resident", "error");
