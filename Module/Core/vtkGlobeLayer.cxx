@@ -1048,6 +1048,8 @@ void vtkGlobeLayer::Invalidate()
   in.Streamed = false;
   in.Global = false;
   this->ReprojectedFromEPSG = 0;
+  this->ReprojectedFromCRS.clear();
+  this->CRSDefinition.clear();
   this->RasterWidth = this->RasterHeight = this->NumberOfComponents = 0;
   this->NumberOfVoids = 0;
   this->NumberOfImplausibleValues = 0;
@@ -1915,13 +1917,24 @@ bool vtkGlobeLayer::Load(vtkImageData* image, int streamedRows)
   in.PixelSize[0] = t[2];
   in.PixelSize[1] = t[3];
   this->ReprojectedFromEPSG = 0;
-  if (this->ModelType == Projected && this->EPSG > 0 &&
-    !vtkGlobeMapProjection::IsSupportedEPSG(this->EPSG))
+  this->ReprojectedFromCRS.clear();
+  // A projected CRS without an EPSG code: its definition (the reader's GlobeCRS).
+  this->CRSDefinition = this->ModelType == Projected && this->EPSG <= 0
+    ? FieldString(fd, vtkGlobeRasterReader::GetCRSDefinitionArrayName())
+    : std::string();
+  const bool byDefinition = !this->CRSDefinition.empty();
+  if (this->ModelType == Projected &&
+    ((this->EPSG > 0 && !vtkGlobeMapProjection::IsSupportedEPSG(this->EPSG)) ||
+      (byDefinition &&
+        !vtkGlobeMapProjection::IsSupportedDefinition(this->CRSDefinition.c_str()))))
   {
     // A CRS the GPU does not project: resampled into a geographic grid, once per load.
+    const std::string crs =
+      byDefinition ? this->CRSDefinition : "EPSG:" + std::to_string(this->EPSG);
+    const std::string named = byDefinition ? "its CRS '" + crs + "'" : crs;
     if (streamed)
     {
-      return fail("EPSG:" + std::to_string(this->EPSG) +
+      return fail(named +
         " is not a projection the globe draws directly, and a streamed layer cannot be "
         "reprojected on load (set Streaming Off, or reproject the file)");
     }
@@ -1929,16 +1942,18 @@ bool vtkGlobeLayer::Load(vtkImageData* image, int streamedRows)
     vtkSmartPointer<vtkDataArray> reprojected;
     std::string why;
     const double origin2[2] = { t[0], t[1] }, pixel2[2] = { t[2], t[3] };
-    if (!vtkGlobeReprojection::ToGeographic(this->EPSG, origin2, pixel2, width, height, in.Data,
+    if (!vtkGlobeReprojection::ToGeographic(crs, origin2, pixel2, width, height, in.Data,
           this->Interpolation == Nearest, budget * 1024.0 * 1024.0, reprojected, grid, why))
     {
-      return fail("EPSG:" + std::to_string(this->EPSG) + " cannot be reprojected: " + why);
+      return fail(named + " cannot be reprojected: " + why);
     }
-    vtkLogF(INFO, "%s: EPSG:%d is reprojected on load into a %d x %d geographic grid of %.6g x %.6g "
+    vtkLogF(INFO, "%s: %s is reprojected on load into a %d x %d geographic grid of %.6g x %.6g "
                   "degrees (from %d x %d texels)",
-      what.c_str(), this->EPSG, grid.Width, grid.Height, grid.DLon, grid.DLat, width, height);
+      what.c_str(), named.c_str(), grid.Width, grid.Height, grid.DLon, grid.DLat, width, height);
     in.Data = reprojected;
     this->ReprojectedFromEPSG = this->EPSG;
+    this->ReprojectedFromCRS = this->CRSDefinition;
+    this->CRSDefinition.clear();
     this->ModelType = Geographic;
     this->EPSG = 4326;
     this->RasterWidth = grid.Width;
@@ -1964,6 +1979,44 @@ bool vtkGlobeLayer::Load(vtkImageData* image, int streamedRows)
     in.DefaultName = file.empty() ? std::string() : std::filesystem::path(file).stem().string();
   }
   return true;
+}
+
+//------------------------------------------------------------------------------------------
+const char* vtkGlobeLayer::GetCRSDefinition()
+{
+  return this->CRSDefinition.c_str();
+}
+
+const char* vtkGlobeLayer::GetReprojectedFromCRS()
+{
+  return this->ReprojectedFromCRS.c_str();
+}
+
+bool vtkGlobeLayer::IsReprojected()
+{
+  return this->ReprojectedFromEPSG != 0 || !this->ReprojectedFromCRS.empty();
+}
+
+bool vtkGlobeLayer::GetMapProjection(vtkGlobeMapProjection* projection)
+{
+  if (!projection || this->ModelType != Projected)
+  {
+    return false;
+  }
+  // Quiet: the callers name the layer in their own messages.
+  const bool warnings = vtkObject::GetGlobalWarningDisplay();
+  vtkObject::GlobalWarningDisplayOff();
+  const bool set = this->EPSG > 0
+    ? vtkGlobeMapProjection::IsSupportedEPSG(this->EPSG) && projection->SetFromEPSG(this->EPSG)
+    : vtkGlobeMapProjection::IsSupportedDefinition(this->CRSDefinition.c_str()) &&
+      projection->SetFromDefinition(this->CRSDefinition.c_str());
+  vtkObject::SetGlobalWarningDisplay(warnings);
+  const double a = this->DatumSemiMajorAxis, b = this->DatumSemiMinorAxis;
+  if (set && a > 0.0 && b > 0.0 && b <= a)
+  {
+    projection->SetEllipsoid(a, (a - b) / a);
+  }
+  return set;
 }
 
 //------------------------------------------------------------------------------------------
@@ -2125,6 +2178,10 @@ void vtkGlobeLayer::PrintSelf(ostream& os, vtkIndent indent)
                                        : (this->ModelType == Projected ? "Projected" : "unknown"))
      << "\n";
   os << indent << "EPSG: " << this->EPSG << "\n";
+  os << indent << "CRSDefinition: " << (this->CRSDefinition.empty() ? "(none)" : this->CRSDefinition)
+     << "\n";
+  os << indent << "ReprojectedFromCRS: "
+     << (this->ReprojectedFromCRS.empty() ? "(none)" : this->ReprojectedFromCRS) << "\n";
   if (this->ModelType == Geographic)
   {
     os << indent << "GeographicExtent: " << in.Extent[0] << ", " << in.Extent[1] << ", "

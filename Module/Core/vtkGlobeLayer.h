@@ -64,6 +64,7 @@ class vtkAlgorithmOutput;
 class vtkDataArray;
 class vtkDataObject;
 class vtkGlobeGeoid;
+class vtkGlobeMapProjection;
 class vtkGlobePageSource;
 class vtkGlobeRasterReader;
 class vtkImageData;
@@ -533,7 +534,20 @@ public:
   vtkGetMacro(ModelType, int);
   /// The geographic (GCS) or projected (PCS) EPSG code; 0 if user-defined or unknown.
   vtkGetMacro(EPSG, int);
+  /**
+   * A projected raster's CRS when it has no EPSG code (the reader's GlobeCRS field: a PROJ
+   * string or WKT, e.g. MODIS's sinusoidal grid); "" otherwise.
+   */
+  const char* GetCRSDefinition();
   ///@}
+
+  /**
+   * Sets `projection` to this Projected layer's map projection (its EPSG code or its CRS
+   * definition, vtkGlobeMapProjection::SetFromEPSG / SetFromDefinition) and its file's datum
+   * ellipsoid when it spells one out. False, without an error and leaving `projection`
+   * unchanged, when the layer is not projected or its CRS is not one the GPU draws.
+   */
+  bool GetMapProjection(vtkGlobeMapProjection* projection);
 
   /**
    * West, east, south, north in degrees: the box around the outer pixel edges. Geographic
@@ -575,6 +589,11 @@ public:
    * layer is drawn in its own georeferencing. Streamed layers need a supported CRS.
    */
   vtkGetMacro(ReprojectedFromEPSG, int);
+  /// Whether the layer was resampled on load into a geographic grid (ReprojectedFromEPSG, or
+  /// a CRS without a code, GetReprojectedFromCRS).
+  bool IsReprojected();
+  /// The CRS definition a layer without an EPSG code was reprojected from; "" otherwise.
+  const char* GetReprojectedFromCRS();
 
   /**
    * A layer that spans all longitudes and so wraps east-west, without a seam or a feathered
@@ -595,6 +614,7 @@ protected:
   int Role = Height;
   int VerticalDatum = Ellipsoidal;
   int ReprojectedFromEPSG = 0;
+  std::string ReprojectedFromCRS;
   double ExtentResult[4] = { 0, 0, 0, 0 }; // GetGeographicExtent()'s
   char* GeoidFileName = nullptr;
   char* FileName = nullptr;
@@ -639,6 +659,7 @@ protected:
   vtkIdType NumberOfImplausibleValues = 0;
   int ModelType = 0;
   int EPSG = 0;
+  std::string CRSDefinition;
   double DatumSemiMajorAxis = 0.0;
   double DatumSemiMinorAxis = 0.0;
   double MinimumValue = 0.0;

@@ -182,7 +182,7 @@ Conic MakeConic(vtkGlobeMapProjection* p)
     p->GetCentralMeridian(), p->GetFalseEasting(), p->GetFalseNorthing());
 }
 
-// What SetFromPROJ found for one EPSG code (cached: PROJ's database is read once per code).
+// What SetFromPROJ found for one CRS (cached: PROJ's database is read once per CRS).
 struct PROJDefinition
 {
   bool Usable = false;
@@ -196,9 +196,9 @@ struct PROJDefinition
 };
 
 std::mutex PROJMutex;
-std::map<int, PROJDefinition>& PROJDefinitions()
+std::map<std::string, PROJDefinition>& PROJDefinitions()
 {
-  static std::map<int, PROJDefinition> definitions;
+  static std::map<std::string, PROJDefinition> definitions;
   return definitions;
 }
 
@@ -232,12 +232,12 @@ double Pole(double lat)
   return std::abs(std::abs(lat) - 90.0) < 1e-9 ? std::copysign(90.0, lat) : lat;
 }
 
-// The conversion's parameters by EPSG parameter code, in degrees and metres.
-bool ReadPROJDefinition(int code, PROJDefinition& d)
+// The conversion's parameters by EPSG parameter code, in degrees and metres, of the CRS PROJ
+// makes from `name` ("EPSG:code", a PROJ string, WKT).
+bool ReadPROJDefinition(const std::string& name, PROJDefinition& d)
 {
   PROJScope scope;
   PJ_CONTEXT* ctx = scope.Context;
-  const std::string name = "EPSG:" + std::to_string(code);
   PJ* crs = scope.Keep(proj_create(ctx, name.c_str()));
   if (!crs || proj_get_type(crs) != PJ_TYPE_PROJECTED_CRS)
   {
@@ -270,10 +270,11 @@ bool ReadPROJDefinition(int code, PROJDefinition& d)
   d.A = a;
   d.F = (a - b) / a;
   PJ* conversion = scope.Keep(proj_crs_get_coordoperation(ctx, crs));
+  const char* methodName = nullptr;
   const char* methodCode = nullptr;
   if (!conversion ||
-    !proj_coordoperation_get_method_info(ctx, conversion, nullptr, nullptr, &methodCode) ||
-    !methodCode)
+    !proj_coordoperation_get_method_info(ctx, conversion, &methodName, nullptr, &methodCode) ||
+    !(methodCode || methodName))
   {
     return false;
   }
@@ -313,9 +314,19 @@ bool ReadPROJDefinition(int code, PROJDefinition& d)
   d.FalseEasting = get({ 8806, 8826 }, 0.0);
   d.FalseNorthing = get({ 8807, 8827 }, 0.0);
   d.CentralMeridian = get({ 8802, 8822, 8833 }, 0.0);
-  const int method = std::atoi(methodCode);
+  // Methods without an EPSG code go by PROJ's name for them.
+  const int method = methodCode ? std::atoi(methodCode)
+    : std::string(methodName) == "Sinusoidal" ? -1
+                                               : 0;
   switch (method)
   {
+    case -1: // sinusoidal: the spherical formulas only (MODIS), as PROJ's +R
+      if (d.F != 0.0)
+      {
+        return false;
+      }
+      d.Kind = vtkGlobeMapProjection::Sinusoidal;
+      break;
     case 9807: // transverse Mercator
       d.Kind = vtkGlobeMapProjection::TransverseMercator;
       d.LatitudeOfOrigin = get({ 8801 }, NaN);
@@ -434,6 +445,8 @@ const char* vtkGlobeMapProjection::GetKindAsString()
       return "LambertAzimuthalEqualArea";
     case CylindricalEqualArea:
       return "CylindricalEqualArea";
+    case Sinusoidal:
+      return "Sinusoidal";
   }
   return "unknown";
 }
@@ -579,6 +592,17 @@ void vtkGlobeMapProjection::SetToCylindricalEqualArea(
     falseEasting, falseNorthing);
 }
 
+void vtkGlobeMapProjection::SetToSinusoidal(
+  double sphereRadius, double centralMeridian, double falseEasting, double falseNorthing)
+{
+  if (!this->SetEllipsoid(sphereRadius, 0.0))
+  {
+    return;
+  }
+  this->SetParameters(Sinusoidal, centralMeridian, 0.0, 90.0, 1.0, 0.0, falseEasting,
+    falseNorthing);
+}
+
 double vtkGlobeMapProjection::GetApexHemisphere()
 {
   switch (this->Kind)
@@ -616,6 +640,29 @@ bool vtkGlobeMapProjection::SetFromEPSG(int code)
     return false;
   }
   return true;
+}
+
+bool vtkGlobeMapProjection::SetFromDefinition(const char* definition)
+{
+  const double a = this->SemiMajorAxis, f = this->Flattening;
+  if (!definition || !*definition || !this->SetFromPROJ(definition))
+  {
+    this->SemiMajorAxis = a;
+    this->Flattening = f;
+    vtkErrorMacro(<< "SetFromDefinition: '" << (definition ? definition : "(null)")
+                  << "' is not a CRS this class draws (a projected CRS in metres whose method "
+                     "is one of the kinds in the class description, agreeing with PROJ's own "
+                     "transformation from EPSG:4326); the projection is unchanged.");
+    return false;
+  }
+  this->EPSG = 0;
+  return true;
+}
+
+bool vtkGlobeMapProjection::IsSupportedDefinition(const char* definition)
+{
+  vtkNew<vtkGlobeMapProjection> projection;
+  return definition && *definition && projection->SetFromPROJ(definition);
 }
 
 bool vtkGlobeMapProjection::SetFromEPSGQuietly(int code)
@@ -671,7 +718,7 @@ bool vtkGlobeMapProjection::SetFromEPSGQuietly(int code)
   {
     this->SetToUTM(code % 100, code < 32700);
   }
-  else if (!this->SetFromPROJ(code))
+  else if (code <= 0 || !this->SetFromPROJ("EPSG:" + std::to_string(code)))
   {
     this->SemiMajorAxis = a;
     this->Flattening = f;
@@ -681,12 +728,8 @@ bool vtkGlobeMapProjection::SetFromEPSGQuietly(int code)
   return true;
 }
 
-bool vtkGlobeMapProjection::SetFromPROJ(int code)
+bool vtkGlobeMapProjection::SetFromPROJ(const std::string& name)
 {
-  if (code <= 0)
-  {
-    return false;
-  }
   // The definition's projection on `p` (the candidate checked against PROJ, then this one).
   const auto apply = [](vtkGlobeMapProjection* p, const PROJDefinition& d) {
     p->SemiMajorAxis = d.A;
@@ -699,14 +742,14 @@ bool vtkGlobeMapProjection::SetFromPROJ(int code)
   {
     std::lock_guard<std::mutex> lock(PROJMutex);
     auto& definitions = PROJDefinitions();
-    auto it = definitions.find(code);
+    auto it = definitions.find(name);
     if (it != definitions.end())
     {
       d = it->second;
     }
     else
     {
-      d.Usable = ReadPROJDefinition(code, d);
+      d.Usable = ReadPROJDefinition(name, d);
       // Checked against PROJ's own transformation from EPSG:4326 (with whatever datum shift
       // PROJ applies): a grid over the CRS's area of use must agree within 1 mm.
       if (d.Usable)
@@ -714,9 +757,8 @@ bool vtkGlobeMapProjection::SetFromPROJ(int code)
         vtkNew<vtkGlobeMapProjection> candidate;
         apply(candidate, d);
         PROJScope scope;
-        const std::string target = "EPSG:" + std::to_string(code);
         PJ* raw = scope.Keep(
-          proj_create_crs_to_crs(scope.Context, "EPSG:4326", target.c_str(), nullptr));
+          proj_create_crs_to_crs(scope.Context, "EPSG:4326", name.c_str(), nullptr));
         PJ* t = raw ? scope.Keep(proj_normalize_for_visualization(scope.Context, raw)) : nullptr;
         int checked = 0;
         const int n = 8;
@@ -744,7 +786,7 @@ bool vtkGlobeMapProjection::SetFromPROJ(int code)
         }
         d.Usable = d.Usable && t && checked >= 10;
       }
-      definitions[code] = d;
+      definitions[name] = d;
     }
   }
   if (d.Usable)
@@ -890,6 +932,14 @@ bool vtkGlobeMapProjection::ForwardUnchecked(double lon, double lat, double xy[2
       case LambertAzimuthalEqualArea:
         MakeConic(this).Forward(lat, lon, x, y);
         break;
+      case Sinusoidal:
+      {
+        // The sphere's formulas (Flattening 0 by construction), lon - lon0 in [-180, 180).
+        const double dLon = WrapInto(lon - this->CentralMeridian, -180.0);
+        x = this->FalseEasting + a * dLon * Deg * std::cos(lat * Deg);
+        y = this->FalseNorthing + a * lat * Deg;
+        break;
+      }
       case CylindricalEqualArea:
       {
         const double k0 = CylindricalEqualAreaScale(f, this->StandardParallel);
@@ -1013,6 +1063,20 @@ bool vtkGlobeMapProjection::InverseUnchecked(double x, double y, double lonLat[2
           return false;
         }
         break;
+      case Sinusoidal:
+      {
+        lat = (y - this->FalseNorthing) / (a * Deg);
+        lat = std::abs(lat) <= 90.0 + 1e-12 ? std::max(-90.0, std::min(90.0, lat)) : lat;
+        const double c = std::cos(lat * Deg);
+        const double dLon = c > 0.0 ? (x - this->FalseEasting) / (a * Deg * c) : 0.0;
+        // Outside the map's outline (the sinusoids at +-180 degrees) there is no inverse.
+        if (!(std::abs(dLon) <= 180.0 * (1.0 + 1e-12)) || std::abs(lat) > 90.0)
+        {
+          return false;
+        }
+        lon = this->CentralMeridian + dLon;
+        break;
+      }
       case CylindricalEqualArea:
       {
         const double k0 = CylindricalEqualAreaScale(f, this->StandardParallel);
@@ -1138,6 +1202,8 @@ const char* vtkGlobeMapProjection::GetShaderFunctionName()
       return "globe_projectAlbersEqualArea";
     case CylindricalEqualArea:
       return "globe_projectCylindricalEqualArea";
+    case Sinusoidal:
+      return "globe_projectSinusoidal";
   }
   return "";
 }
@@ -1220,7 +1286,7 @@ bool vtkGlobeMapProjection::ComputeShaderParametersAt(const double origin[2],
   const double lonR = std::remainder(lonLat[0], 360.0) * Deg;
   const double latR = hemi * lonLat[1] * Deg;
   const double e = (this->Kind == WebMercator || this->Kind == Geographic ||
-                     this->Kind == Equirectangular)
+                     this->Kind == Equirectangular || this->Kind == Sinusoidal)
     ? 0.0
     : std::sqrt(f * (2.0 - f));
 
@@ -1308,6 +1374,12 @@ bool vtkGlobeMapProjection::ComputeShaderParametersAt(const double origin[2],
       }
       break;
     }
+    case Sinusoidal:
+      // X = (lon - lon_r) cos lat + (lon_r - lon0)(cos lat - cos lat_r), Y = lat - lat_r.
+      m[0] = a / mapWidth;
+      m[3] = -a / mapHeight;
+      P[24] = std::remainder(lonR - this->CentralMeridian * Deg, 2.0 * Pi);
+      break;
     case CylindricalEqualArea:
     {
       // y = a q / (2 k0): dv from (q - q_r) / (1 - e^2).

@@ -26,6 +26,11 @@
  * - CylindricalEqualArea: standard parallel, central meridian, false easting/northing; e.g.
  *   EASE-Grid 2.0 Global (EPSG:6933) (GeographicLib::AlbersEqualArea with standard parallels
  *   +-phi1).
+ * - Sinusoidal: on a sphere of radius SemiMajorAxis (Flattening 0), central meridian, false
+ *   easting/northing: x = FE + R (lon - lon0) cos(lat), y = FN + R lat, lon - lon0 in
+ *   [-180, 180). The MODIS land products' grid (R = 6371007.181 m), which has no EPSG code:
+ *   SetFromDefinition takes its PROJ string or WKT. Latitudes are the datum's geodetic ones,
+ *   as PROJ takes them (no datum shift to a sphere).
  *
  * For the cylindrical kinds (Geographic, Equirectangular, Mercator, WebMercator,
  * CylindricalEqualArea) Forward wraps the longitude into [LongitudeWest, LongitudeWest + 360)
@@ -55,6 +60,8 @@
 #include "vtkGlobeCoreModule.h" // for export macro
 #include "vtkObject.h"
 
+#include <string> // for SetFromPROJ
+
 class VTKGLOBECORE_EXPORT vtkGlobeMapProjection : public vtkObject
 {
 public:
@@ -74,7 +81,8 @@ public:
     LambertConformalConic = 6,
     AlbersEqualArea = 7,
     LambertAzimuthalEqualArea = 8,
-    CylindricalEqualArea = 9
+    CylindricalEqualArea = 9,
+    Sinusoidal = 10
   };
 
   /// Number of floats ComputeShaderParameters writes (seven vec4).
@@ -85,7 +93,7 @@ public:
 
   ///@{
   /// The kind; the parameters below are kept when it changes.
-  vtkSetClampMacro(Kind, int, Geographic, CylindricalEqualArea);
+  vtkSetClampMacro(Kind, int, Geographic, Sinusoidal);
   vtkGetMacro(Kind, int);
   const char* GetKindAsString();
   ///@}
@@ -97,6 +105,18 @@ public:
   bool SetFromEPSG(int code);
   /// The EPSG code last set with SetFromEPSG; 0 after a SetTo... call or SetEllipsoid.
   vtkGetMacro(EPSG, int);
+
+  /**
+   * Set everything from a CRS definition PROJ reads (a PROJ string, WKT, or "AUTHORITY:code"),
+   * for CRSs without an EPSG code, such as MODIS's sinusoidal grid
+   * ("+proj=sinu +R=6371007.181 +units=m"). Accepted under the same rule as SetFromEPSG's
+   * PROJ-database codes: one of the kinds above, in metres, agreeing with PROJ's own
+   * transformation from EPSG:4326 within 1 mm over the CRS's area of use (the whole globe when
+   * it has none). Returns false with an error otherwise; the projection is then unchanged.
+   */
+  bool SetFromDefinition(const char* definition);
+  /// Whether SetFromDefinition accepts `definition` (without an error).
+  static bool IsSupportedDefinition(const char* definition);
 
   ///@{
   /**
@@ -142,6 +162,10 @@ public:
     double falseEasting = 0.0, double falseNorthing = 0.0);
   void SetToCylindricalEqualArea(double standardParallel, double centralMeridian,
     double falseEasting = 0.0, double falseNorthing = 0.0);
+  /// The sinusoidal projection on a sphere of radius sphereRadius (which becomes the
+  /// ellipsoid: SemiMajorAxis sphereRadius, Flattening 0); MODIS: 6371007.181, 0.
+  void SetToSinusoidal(double sphereRadius, double centralMeridian, double falseEasting = 0.0,
+    double falseNorthing = 0.0);
   ///@}
 
   ///@{
@@ -204,7 +228,7 @@ public:
    * 10 degrees either side of the central meridian between 89 S and 89 N (transverse
    * Mercator; UTM: 80 S to 84 N), all longitudes and latitudes short of 0.5 degrees of the
    * pole opposite the apex (the conics and Lambert azimuthal equal-area), the whole globe
-   * (cylindrical equal-area). The GPU functions return (-1, -1) outside it.
+   * (cylindrical equal-area, sinusoidal). The GPU functions return (-1, -1) outside it.
    */
   void GetValidDomain(double box[4]);
   /// Whether (lon, lat) in degrees lies in GetValidDomain's region.
@@ -236,7 +260,7 @@ public:
    * globe_projectEquirectangular (Geographic too), globe_projectMercator (Web Mercator too),
    * globe_projectPolarStereographic, globe_projectTransverseMercator,
    * globe_projectConformalConic, globe_projectAlbersEqualArea (Lambert azimuthal equal-area
-   * too) or globe_projectCylindricalEqualArea.
+   * too), globe_projectCylindricalEqualArea or globe_projectSinusoidal.
    */
   const char* GetShaderFunctionName();
 
@@ -295,7 +319,8 @@ private:
     double latitudeOfTrueScale, double scaleFactor, double latitudeOfOrigin, double falseEasting,
     double falseNorthing);
   bool SetFromEPSGQuietly(int code);
-  bool SetFromPROJ(int code);
+  // A CRS from PROJ ("EPSG:code" or any definition it reads), checked against PROJ.
+  bool SetFromPROJ(const std::string& name);
   void SetToConic(int kind, double standardParallel1, double standardParallel2,
     double latitudeOfOrigin, double centralMeridian, double falseEasting, double falseNorthing);
   // +1 when the conic's apex (or the azimuthal projection's centre) is the north pole.

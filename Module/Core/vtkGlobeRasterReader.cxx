@@ -287,12 +287,35 @@ int IdentifyEPSG(
   return code;
 }
 
+/// Whether PROJ reads `definition` as a projected CRS.
+bool IsProjectedCRS(const std::string& definition)
+{
+  bool projected = false;
+  if (definition.empty())
+  {
+    return false;
+  }
+  if (PJ_CONTEXT* context = proj_context_create())
+  {
+    proj_log_level(context, PJ_LOG_NONE);
+    if (PJ* crs = proj_create(context, definition.c_str()))
+    {
+      projected = proj_get_type(crs) == PJ_TYPE_PROJECTED_CRS;
+      proj_destroy(crs);
+    }
+    proj_context_destroy(context);
+  }
+  return projected;
+}
+
 /// The user-defined projection of a GeoTIFF (ProjectedCSTypeGeoKey absent or user-defined) as
 /// libgeotiff normalises it, identified by PROJ. Every GeoKey libgeotiff's normalisation reads
 /// is first checked for its type (a corrupt key is refused before libgeotiff reads it).
-int IdentifyUserDefinedProjection(GTIF* gtif, int& confidence, std::string& name, std::string& why)
+int IdentifyUserDefinedProjection(GTIF* gtif, int& confidence, std::string& name,
+  std::string& definition, std::string& why)
 {
   confidence = 0;
+  definition.clear();
   // GeogGeodeticDatum .. GeogAzimuthUnits and ProjectedCSType .. ProjRectifiedGridAngle, by type.
   const geokey_t shorts[] = { GeographicTypeGeoKey, GeogGeodeticDatumGeoKey,
     GeogPrimeMeridianGeoKey, GeogLinearUnitsGeoKey, GeogAngularUnitsGeoKey, GeogEllipsoidGeoKey,
@@ -342,7 +365,8 @@ int IdentifyUserDefinedProjection(GTIF* gtif, int& confidence, std::string& name
   {
     if (char* proj4 = GTIFGetProj4Defn(defn))
     {
-      code = IdentifyEPSG(std::string(proj4) + " +type=crs", confidence, name);
+      definition = std::string(proj4) + " +type=crs";
+      code = IdentifyEPSG(definition, confidence, name);
       GTIFFreeMemory(proj4);
     }
   }
@@ -680,6 +704,8 @@ struct Georeference
   std::string Units;
   std::string Source;
   std::string EPSGFrom; // where the EPSG code was read (a GeoKey's name, the .prj file)
+  // A projected CRS PROJ reads but matches with no EPSG code (EPSG 0): its definition.
+  std::string CRS;
 };
 
 /// What libtiff and libgeotiff tell about a file.
@@ -892,8 +918,8 @@ bool ReadGeoTIFF(const std::string& fileName, TIFFInfo& info, std::string& why)
   else if (!geographic)
   {
     int confidence = 0;
-    std::string name;
-    const int identified = IdentifyUserDefinedProjection(gtif, confidence, name, why);
+    std::string name, definition;
+    const int identified = IdentifyUserDefinedProjection(gtif, confidence, name, definition, why);
     if (identified < 0)
     {
       return false;
@@ -903,6 +929,12 @@ bool ReadGeoTIFF(const std::string& fileName, TIFFInfo& info, std::string& why)
       geo.EPSG = identified;
       geo.EPSGFrom = "its user-defined projection GeoKeys, which PROJ identifies as EPSG:" +
         std::to_string(identified) + " (" + name + ", " + std::to_string(confidence) + " %)";
+    }
+    else if (IsProjectedCRS(definition))
+    {
+      geo.CRS = definition;
+      geo.EPSGFrom = "its user-defined projection GeoKeys ('" + definition +
+        "', which match no EPSG CRS)";
     }
   }
   // A projected CRS key in a geographic file contradicts its model type.
@@ -1512,38 +1544,57 @@ int vtkGlobeRasterReader::RequestInformation(
           const int code = definition.rfind('+', 0) == 0
             ? IdentifyEPSG(definition, confidence, name, &projected)
             : 0;
-          if (code == 0)
+          if (code == 0 && definition.rfind('+', 0) == 0 && IsProjectedCRS(definition))
+          {
+            // A projected CRS without an EPSG code (MODIS's sinusoidal grid): by definition.
+            geo.ModelType = Projected;
+            geo.CRS = definition;
+            geo.EPSGFrom = "its projection file '" + prj + "' (a PROJ string matching no EPSG CRS)";
+          }
+          else if (code == 0)
           {
             return this->Fail(vtkErrorCode::FileFormatError,
               "its projection file '" + prj + "' is not a geographic or projected WKT CRS (" +
                 (wkt.Keyword.empty() ? std::string("no WKT keyword") : wkt.Keyword) +
                 "), nor a PROJ string PROJ identifies with an EPSG CRS");
           }
-          geo.ModelType = projected ? Projected : Geographic;
-          geo.EPSG = code;
-          geo.EPSGFrom = "its projection file '" + prj + "' (a PROJ string PROJ identifies as EPSG:" +
-            std::to_string(code) + ", " + name + ", " + std::to_string(confidence) + " %)";
+          else
+          {
+            geo.ModelType = projected ? Projected : Geographic;
+            geo.EPSG = code;
+            geo.EPSGFrom = "its projection file '" + prj +
+              "' (a PROJ string PROJ identifies as EPSG:" + std::to_string(code) + ", " + name +
+              ", " + std::to_string(confidence) + " %)";
+          }
         }
         else
         {
           geo.EPSG = wkt.EPSG;
           geo.EPSGFrom = "its projection file '" + prj + "'";
         }
-        if (geo.EPSG == 0 && this->EPSG == 0 && geo.ModelType == Projected)
+        if (geo.EPSG == 0 && geo.CRS.empty() && this->EPSG == 0 && geo.ModelType == Projected)
         {
           // A WKT without an authority (e.g. written from a PROJ string): PROJ may know it.
           int confidence = 0;
           std::string name;
           geo.EPSG = IdentifyEPSG(text, confidence, name);
-          if (geo.EPSG == 0)
+          if (geo.EPSG == 0 && IsProjectedCRS(text))
+          {
+            geo.CRS = text;
+            geo.EPSGFrom += " (a projected CRS matching no EPSG CRS)";
+          }
+          else if (geo.EPSG == 0)
           {
             return this->Fail(vtkErrorCode::FileFormatError,
               "its projection file '" + prj +
                 "' names no EPSG authority for its projected CRS, and PROJ finds no EPSG CRS "
                 "equivalent to it; give the code with SetEPSG");
           }
-          geo.EPSGFrom += ", which PROJ identifies as EPSG:" + std::to_string(geo.EPSG) + " (" +
-            name + ", " + std::to_string(confidence) + " %)";
+          else
+          {
+            geo.EPSGFrom += ", which PROJ identifies as EPSG:" + std::to_string(geo.EPSG) +
+              " (" + name + ", " + std::to_string(confidence) + " %)";
+          }
         }
         if (geo.ModelType == Geographic && wkt.UnitFactor > 0.0)
         {
@@ -1921,6 +1972,10 @@ int vtkGlobeRasterReader::RequestData(
   };
   addInt(GetModelTypeArrayName(), geo.ModelType);
   addInt(GetEPSGArrayName(), geo.EPSG);
+  if (geo.EPSG == 0 && !geo.CRS.empty())
+  {
+    addString(GetCRSDefinitionArrayName(), geo.CRS);
+  }
   addDoubles(GetGeoTransformArrayName(), { t[0], t[3], t[1], -t[5] });
   if (geo.ModelType == Geographic)
   {

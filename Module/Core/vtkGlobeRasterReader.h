@@ -23,6 +23,8 @@
  * Field data (names returned by the static Get...ArrayName() methods):
  * - GlobeModelType (int, 1): 1 geographic, 2 projected (vtkGlobeRasterReader::ModelTypes).
  * - GlobeEPSG (int, 1): the geographic or projected EPSG code; 0 when user-defined/unknown.
+ * - GlobeCRS (string, 1; only for a projected CRS that PROJ reads but matches with no EPSG
+ *   code, e.g. MODIS's sinusoidal grid): its definition, a PROJ string or WKT.
  * - GlobeGeoTransform (double, 4): x and y of the north-west OUTER pixel corner, pixel width
  *   (east) and pixel height (south), both positive, in map units.
  * - GlobeGeographicExtent (double, 4; geographic only): west, east, south, north outer edges.
@@ -120,6 +122,7 @@ public:
   static const char* GetDatumSemiAxesArrayName() { return "GlobeDatumSemiAxes"; }
   static const char* GetFileNameArrayName() { return "GlobeFileName"; }
   static const char* GetGeoreferenceSourceArrayName() { return "GlobeGeoreferenceSource"; }
+  static const char* GetCRSDefinitionArrayName() { return "GlobeCRS"; }
   static const char* GetStorageOrientationArrayName() { return "GlobeStorageOrientation"; }
   ///@}
 

@@ -21,14 +21,13 @@ struct Transformation
 {
   PJ_CONTEXT* Context = proj_context_create();
   PJ* P = nullptr;
-  explicit Transformation(int code)
+  explicit Transformation(const std::string& source)
   {
     if (!this->Context)
     {
       return;
     }
     proj_log_level(this->Context, PJ_LOG_NONE);
-    const std::string source = "EPSG:" + std::to_string(code);
     PJ* raw = proj_create_crs_to_crs(this->Context, source.c_str(), "EPSG:4326", nullptr);
     if (raw)
     {
@@ -58,14 +57,14 @@ bool Finite(double v)
 }
 } // namespace
 
-bool vtkGlobeReprojection::ToGeographic(int code, const double origin[2], const double pixel[2],
+bool vtkGlobeReprojection::ToGeographic(const std::string& crs, const double origin[2], const double pixel[2],
   int width, int height, vtkDataArray* data, bool nearest, double maxBytes,
   vtkSmartPointer<vtkDataArray>& out, Grid& grid, std::string& why)
 {
-  Transformation t(code);
+  Transformation t(crs);
   if (!t.P)
   {
-    why = "PROJ has no transformation from EPSG:" + std::to_string(code) + " to EPSG:4326";
+    why = "PROJ has no transformation from " + crs + " to EPSG:4326";
     return false;
   }
   auto* heights = vtkFloatArray::SafeDownCast(data);
@@ -117,7 +116,7 @@ bool vtkGlobeReprojection::ToGeographic(int code, const double origin[2], const 
   }
   if (mapped < 4)
   {
-    why = "its extent does not map to longitudes and latitudes through EPSG:" + std::to_string(code);
+    why = "its extent does not map to longitudes and latitudes through " + crs;
     return false;
   }
   if (east360 - west360 < east - west)

@@ -24,7 +24,7 @@ struct Grid
 };
 
 /**
- * Resamples a raster in EPSG:`code` (row 0 north; north-west outer corner `origin` and pixel
+ * Resamples a raster in the CRS `crs` ("EPSG:code", or a definition PROJ reads) (row 0 north; north-west outer corner `origin` and pixel
  * size `pixel` in the CRS's units; `data` float heights with NaN voids, or RGBA bytes) into a
  * geographic grid that covers it, with texels about as large on the ground as the source's
  * (fewer where `maxBytes` would be exceeded). Each output texel centre is transformed into the
@@ -33,7 +33,7 @@ struct Grid
  * transparent pixels. False with `why` when PROJ has no transformation or the raster does not
  * map to the globe.
  */
-bool ToGeographic(int code, const double origin[2], const double pixel[2], int width, int height,
+bool ToGeographic(const std::string& crs, const double origin[2], const double pixel[2], int width, int height,
   vtkDataArray* data, bool nearest, double maxBytes, vtkSmartPointer<vtkDataArray>& out,
   Grid& grid, std::string& why);
 }

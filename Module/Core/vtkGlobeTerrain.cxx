@@ -121,8 +121,7 @@ struct vtkGlobeTerrain::vtkInternals
       if (layer->GetModelType() == vtkGlobeLayer::Projected)
       {
         c.Projection = vtkSmartPointer<vtkGlobeMapProjection>::New();
-        if (!vtkGlobeMapProjection::IsSupportedEPSG(layer->GetEPSG()) ||
-          !c.Projection->SetFromEPSG(layer->GetEPSG()))
+        if (!layer->GetMapProjection(c.Projection))
         {
           continue; // the renderer cannot draw it either
         }

@@ -167,7 +167,7 @@ LocalTerrain ComputeLocalTerrain(vtkGlobeMapper* mapper, double lon, double lat,
       (y - dLat >= borderY && y + dLat <= e[3] - e[2] - borderY);
     // A reprojected layer has no value outside its source's footprint (unfilled NaN).
     const bool replaces = fullLon && fullLat && geoidCovers &&
-      layer->GetReprojectedFromEPSG() == 0 &&
+      !layer->IsReprojected() &&
       (layer->GetNumberOfVoids() == 0 || layer->GetFillVoids());
     // More than 64 texels each way: the layer's maximum is a good enough bound.
     if (dLon > 64.0 * texelX || dLat > 64.0 * texelY)

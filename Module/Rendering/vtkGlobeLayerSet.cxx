@@ -650,30 +650,22 @@ bool vtkGlobeLayerSet::PrepareProjection(void* entry)
   }
   vtkGlobeMapProjection* projection = e.Projection;
   const int epsg = layer->GetEPSG();
-  if (epsg <= 0)
+  const std::string definition = layer->GetCRSDefinition();
+  if (epsg <= 0 && definition.empty())
   {
-    return refuse("it is in projected coordinates without an EPSG code, so its projection is "
-                  "unknown");
+    return refuse("it is in projected coordinates without an EPSG code or a CRS definition, so "
+                  "its projection is unknown");
   }
-  // The projection's own errors would name only the code; say which layer it is.
-  const bool warnings = vtkObject::GetGlobalWarningDisplay();
-  vtkObject::GlobalWarningDisplayOff();
-  const bool known = projection->SetFromEPSG(epsg);
-  vtkObject::SetGlobalWarningDisplay(warnings);
-  if (!known)
+  if (!layer->GetMapProjection(projection))
   {
-    return refuse("its map projection EPSG:" + std::to_string(epsg) + " is not supported (" +
-      "supported: geographic, equirectangular, polar stereographic, Mercator, Web Mercator, "
-      "transverse Mercator / UTM, Lambert conformal conic, Albers, polar Lambert azimuthal "
-      "and cylindrical equal-area)");
-  }
-  const double a = layer->GetDatumSemiMajorAxis(), b = layer->GetDatumSemiMinorAxis();
-  if (a > 0.0 && b > 0.0 && b <= a)
-  {
-    projection->SetEllipsoid(a, (a - b) / a);
+    return refuse("its map projection " + (epsg > 0 ? "EPSG:" + std::to_string(epsg) : "'" + definition + "'") +
+      " is not supported (supported: geographic, equirectangular, polar stereographic, Mercator, "
+      "Web Mercator, transverse Mercator / UTM, Lambert conformal conic, Albers, polar Lambert "
+      "azimuthal and cylindrical equal-area, sinusoidal on a sphere)");
   }
   double origin[2], pixelSize[2];
   layer->GetProjectedGeoTransform(origin, pixelSize);
+  const bool warnings = vtkObject::GetGlobalWarningDisplay();
   vtkObject::GlobalWarningDisplayOff();
   double parameters[vtkGlobeMapProjection::NumberOfShaderParameters];
   bool ok = projection->ComputeShaderParametersDouble(
@@ -697,8 +689,10 @@ bool vtkGlobeLayerSet::PrepareProjection(void* entry)
     char text[300];
     std::snprintf(text, sizeof(text),
       "its georeferencing (north-west corner %.6g, %.6g; pixel %.6g x %.6g; %d x %d pixels) does "
-      "not fit its projection EPSG:%d (the extent is empty or outside the projection's domain)",
-      origin[0], origin[1], pixelSize[0], pixelSize[1], layer->GetNumberOfColumns(), layer->GetNumberOfRows(), epsg);
+      "not fit its projection %s (the extent is empty or outside the projection's domain)",
+      origin[0], origin[1], pixelSize[0], pixelSize[1], layer->GetNumberOfColumns(),
+      layer->GetNumberOfRows(),
+      epsg > 0 ? ("EPSG:" + std::to_string(epsg)).c_str() : projection->GetKindAsString());
     return refuse(text);
   }
   e.Function = projection->GetShaderFunctionName();

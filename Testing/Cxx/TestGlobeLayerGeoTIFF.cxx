@@ -9,6 +9,7 @@
 #include "vtkGlobeTestHelpers.h"
 #include "vtkDataArray.h"
 #include "vtkGlobeLayer.h"
+#include "vtkGlobeMapProjection.h"
 #include "vtkNew.h"
 #include "vtkTestErrorObserver.h"
 #include "vtkUnsignedCharArray.h"
@@ -303,9 +304,42 @@ int TestGlobeLayerGeoTIFF(int, char*[])
     // The same with a true-scale latitude no EPSG CRS has: not identified, EPSG 0.
     u.DoubleKeys[0].second = -65.5;
     ok = load("user_stere.tif", u);
-    Expect(ok && layer->GetEPSG() == 0,
+    Expect(ok && layer->GetEPSG() == 0 &&
+        std::string(layer->GetCRSDefinition()).find("+proj=stere") != std::string::npos,
       "polar stereographic GeoKeys true at 65.5 S (no EPSG equivalent): EPSG " +
-        std::to_string(layer->GetEPSG()));
+        std::to_string(layer->GetEPSG()) + ", by its definition '" + layer->GetCRSDefinition() +
+        "'");
+    vtkNew<vtkGlobeMapProjection> projection;
+    Expect(layer->GetMapProjection(projection) &&
+        projection->GetKind() == vtkGlobeMapProjection::PolarStereographic &&
+        projection->GetLatitudeOfTrueScale() == -65.5,
+      "  ... which the GPU draws: polar stereographic true at " +
+        std::to_string(projection->GetLatitudeOfTrueScale()));
+
+    // MODIS's sinusoidal grid as GDAL writes it (user-defined keys on a user-defined sphere):
+    // no EPSG code, kept by definition, drawn as vtkGlobeMapProjection::Sinusoidal.
+    GeoTIFF modis = Ramp();
+    modis.ModelType = ModelTypeProjected;
+    modis.EPSG = KvUserDefined;
+    modis.TiePoints = { 0, 0, 0, -11119505.196667, 4447802.078667, 0 }; // tile h08v05
+    modis.Scale = { 1111950.519667 / 8, 1111950.519667 / 4, 0 };
+    modis.SemiMajor = 6371007.181;
+    modis.InverseFlattening = 0.0;
+    modis.ShortKeys = { { GeographicTypeGeoKey, KvUserDefined },
+      { GeogGeodeticDatumGeoKey, KvUserDefined }, { GeogEllipsoidGeoKey, KvUserDefined },
+      { ProjectionGeoKey, KvUserDefined }, { ProjCoordTransGeoKey, CT_Sinusoidal },
+      { ProjLinearUnitsGeoKey, Linear_Meter } };
+    modis.DoubleKeys = { { ProjCenterLongGeoKey, 0.0 }, { ProjFalseEastingGeoKey, 0.0 },
+      { ProjFalseNorthingGeoKey, 0.0 } };
+    ok = load("modis_h08v05.tif", modis);
+    const std::string definition = ok ? layer->GetCRSDefinition() : "";
+    Expect(ok && layer->GetModelType() == vtkGlobeLayer::Projected && layer->GetEPSG() == 0 &&
+        definition.find("+proj=sinu") != std::string::npos && !layer->IsReprojected(),
+      "MODIS sinusoidal GeoKeys: projected, EPSG 0, definition '" + definition + "'");
+    Expect(layer->GetMapProjection(projection) &&
+        projection->GetKind() == vtkGlobeMapProjection::Sinusoidal &&
+        projection->GetSemiMajorAxis() == 6371007.181 && projection->GetFlattening() == 0.0,
+      "  ... drawn as Sinusoidal on the 6371007.181 m sphere");
   }
 
   std::printf("Nodata and sample types:\n");

@@ -182,5 +182,27 @@ int TestGlobeLayerReprojection(int, char*[])
   Check.Expect(!farLoaded && errors->GetError() &&
       errors->GetErrorMessage().find("EPSG:5773 cannot be reprojected") != std::string::npos,
     "refused with an error that says why (" + said + ")");
+  std::printf("C. A CRS without an EPSG code that the GPU does not draw:\n");
+  {
+    // World Sinusoidal on WGS 84 (ESRI:54008): the ellipsoidal sinusoidal, which only the
+    // sphere's (MODIS) is drawn of. 8 x 8 texels of 100 km around (1000 km E, 5000 km N).
+    auto esri = vtkGlobeTest::ProjectedImage(0, 8, 8, 6.0e5, 5.4e6, 1.0e5,
+      [](int i, int j) { return vtkGlobeTest::TexelColour(4, i, j); }, "ESRI:54008");
+    const bool ok = esri->Update() && esri->IsValid();
+    double box[4];
+    esri->GetGeographicExtent(box);
+    Check.Expect(ok && esri->IsReprojected() && esri->GetReprojectedFromEPSG() == 0 &&
+        std::string(esri->GetReprojectedFromCRS()) == "ESRI:54008" &&
+        esri->GetModelType() == vtkGlobeLayer::Geographic && box[2] > 40.0 && box[3] < 50.0,
+      vtkGlobeTest::Printf("ESRI:54008 loaded and reprojected from its definition into %d x %d "
+                           "geographic texels, S %.3f N %.3f",
+        esri->GetNumberOfColumns(), esri->GetNumberOfRows(), box[2], box[3]));
+    auto modis = vtkGlobeTest::ProjectedImage(0, 8, 8, 6.0e5, 5.4e6, 1.0e5,
+      [](int i, int j) { return vtkGlobeTest::TexelColour(4, i, j); },
+      "+proj=sinu +R=6371007.181 +units=m +type=crs");
+    Check.Expect(modis->Update() && !modis->IsReprojected() &&
+        modis->GetModelType() == vtkGlobeLayer::Projected && modis->GetEPSG() == 0,
+      "MODIS's spherical sinusoidal is kept projected (the GPU draws it)");
+  }
   return Check.Result();
 }

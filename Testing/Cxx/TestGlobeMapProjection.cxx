@@ -79,12 +79,13 @@ double Scale(vtkGlobeMapProjection* p, double lon, double lat)
 // (bound 1e-9 degrees; 1e-7 for the equal-area kinds, where PROJ's series for the latitude
 // from the authalic latitude is off by 1.4e-8 degrees, 1.6 mm: the round trips below show
 // GeographicLib's inverse to 5e-12).
-void ExpectLikePROJ(int code, int kind, const char* what)
+// A CRS without a code: `definition` (SetFromDefinition), with code 0.
+void ExpectLikePROJ(int code, int kind, const char* what, const char* definition = nullptr)
 {
   vtkNew<vtkGlobeMapProjection> p;
-  const bool set = p->SetFromEPSG(code);
+  const bool set = definition ? p->SetFromDefinition(definition) : p->SetFromEPSG(code);
   PJ_CONTEXT* ctx = proj_context_create();
-  const std::string name = "EPSG:" + std::to_string(code);
+  const std::string name = definition ? definition : "EPSG:" + std::to_string(code);
   PJ* crs = proj_create(ctx, name.c_str());
   double west = -180, south = -90, east = 180, north = 90;
   proj_get_area_of_use(ctx, crs, &west, &south, &east, &north, nullptr);
@@ -121,8 +122,8 @@ void ExpectLikePROJ(int code, int kind, const char* what)
   const bool equalArea = kind == vtkGlobeMapProjection::AlbersEqualArea ||
     kind == vtkGlobeMapProjection::LambertAzimuthalEqualArea ||
     kind == vtkGlobeMapProjection::CylindricalEqualArea;
-  std::snprintf(text, sizeof(text), "EPSG:%d (%s) is %s: %d points of its area of use, Forward "
-    "%.2e m from PROJ (bound 1e-3), Inverse %.2e deg (bound %g)", code, what,
+  std::snprintf(text, sizeof(text), "%s (%s) is %s: %d points of its area of use, Forward "
+    "%.2e m from PROJ (bound 1e-3), Inverse %.2e deg (bound %g)", definition ? "definition" : name.c_str(), what,
     set ? p->GetKindAsString() : "refused", points, worst, worstBack,
     equalArea ? 1e-7 : 1e-9);
   Expect(set && p->GetKind() == kind && p->GetEPSG() == code && points >= 300 && worst <= 1e-3 &&
@@ -358,6 +359,29 @@ int TestGlobeMapProjection(int, char*[])
   for (const Code& c : againstPROJ)
   {
     ExpectLikePROJ(c.EPSG, c.Kind, c.Name);
+  }
+  // MODIS's sinusoidal grid has no EPSG code: its PROJ string, and the same as WKT.
+  const char* modis = "+proj=sinu +lon_0=0 +x_0=0 +y_0=0 +R=6371007.181 +units=m +no_defs +type=crs";
+  ExpectLikePROJ(0, vtkGlobeMapProjection::Sinusoidal, "MODIS sinusoidal, PROJ string", modis);
+  {
+    PJ_CONTEXT* ctx = proj_context_create();
+    PJ* crs = proj_create(ctx, modis);
+    const std::string wkt = crs ? proj_as_wkt(ctx, crs, PJ_WKT1_GDAL, nullptr) : "";
+    proj_destroy(crs);
+    proj_context_destroy(ctx);
+    ExpectLikePROJ(0, vtkGlobeMapProjection::Sinusoidal, "MODIS sinusoidal, WKT1", wkt.c_str());
+    vtkNew<vtkGlobeMapProjection> q;
+    q->SetFromDefinition(modis);
+    RoundTrips(q, "MODIS sinusoidal");
+    q->AddObserver(vtkCommand::ErrorEvent, observer);
+    // The ellipsoidal sinusoidal (ESRI:54008, World Sinusoidal on WGS 84) is not the sphere's.
+    Expect(!q->SetFromDefinition("ESRI:54008") && ErrorSaid(observer, "ESRI:54008") &&
+        q->GetKind() == vtkGlobeMapProjection::Sinusoidal && q->GetSemiMajorAxis() == 6371007.181,
+      "ESRI:54008 (ellipsoidal sinusoidal) refused with an error naming it; MODIS kept");
+    Expect(!q->SetFromDefinition("+proj=nonsense") && ErrorSaid(observer, "nonsense"),
+      "SetFromDefinition('+proj=nonsense') refused with an error naming it");
+    Expect(!q->SetFromDefinition("") && ErrorSaid(observer, "SetFromDefinition"),
+      "SetFromDefinition('') refused");
   }
   for (int code : { 27700, 3035, 2056 })
   {

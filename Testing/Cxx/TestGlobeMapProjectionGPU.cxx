@@ -1,6 +1,6 @@
 // globe_projection.glsl on the GPU: the embedded text compiles in a real fragment shader
 // (with every projection function called), and, rendered into a float texture for 256 points
-// per raster (13 rasters, every family), its texture coordinates agree with GeographicLib within 0.01 source pixel
+// per raster (14 rasters, every family), its texture coordinates agree with GeographicLib within 0.01 source pixel
 // (rasters 16384 px on the long side) and with the float C++ mirror. This is what shows that
 // the driver (Mesa llvmpipe here) evaluates the common-subset text as the mirror does.
 #include "globe_projection.h"
@@ -57,6 +57,9 @@ void main()
   else if (globeKind == 5)
     uv = globe_projectAlbersEqualArea(ll.x, ll.y, ll.z, ll.w, globeProjection[0], globeProjection[1],
       globeProjection[2], globeProjection[3], globeProjection[4], globeProjection[5], globeProjection[6]);
+  else if (globeKind == 7)
+    uv = globe_projectSinusoidal(ll.x, ll.y, ll.z, ll.w, globeProjection[0], globeProjection[1],
+      globeProjection[2], globeProjection[3], globeProjection[4], globeProjection[5], globeProjection[6]);
   else
     uv = globe_projectCylindricalEqualArea(ll.x, ll.y, ll.z, ll.w, globeProjection[0], globeProjection[1],
       globeProjection[2], globeProjection[3], globeProjection[4], globeProjection[5], globeProjection[6]);
@@ -67,7 +70,7 @@ void main()
 struct Case
 {
   const char* Name;
-  int Code;
+  int Code; // an EPSG code; 0: MODIS's sinusoidal grid (a PROJ string)
   double West, East, South, North; // geographic box, or map box for polar (MapBox)
   bool MapBox;
 };
@@ -92,6 +95,8 @@ int ShaderKind(vtkGlobeMapProjection* p)
       return 5;
     case vtkGlobeMapProjection::CylindricalEqualArea:
       return 6;
+    case vtkGlobeMapProjection::Sinusoidal:
+      return 7;
     default:
       return 0;
   }
@@ -122,6 +127,9 @@ F::vec2 Mirror(int kind, const float in[4], const float* pf)
         in[0], in[1], in[2], in[3], v[0], v[1], v[2], v[3], v[4], v[5], v[6]);
     case 6:
       return F::globe_projectCylindricalEqualArea(
+        in[0], in[1], in[2], in[3], v[0], v[1], v[2], v[3], v[4], v[5], v[6]);
+    case 7:
+      return F::globe_projectSinusoidal(
         in[0], in[1], in[2], in[3], v[0], v[1], v[2], v[3], v[4], v[5], v[6]);
     default:
       return F::globe_projectEquirectangular(
@@ -188,6 +196,8 @@ int TestGlobeMapProjectionGPU(int, char*[])
     { "EPSG:6931 11 km around the pole (Lambert azimuthal)", 6931, -5550.0, 5550.0, -5550.0,
       5550.0, true },
     { "EPSG:6933 global (cylindrical equal-area)", 6933, -180.0, 180.0, -90.0, 90.0, false },
+    { "MODIS tile h35v09, across the cut (sinusoidal)", 0, 18903158.83, 20015109.35, -1111950.52,
+      0.0, true },
   };
 
   std::mt19937_64 rng(7);
@@ -199,7 +209,14 @@ int TestGlobeMapProjectionGPU(int, char*[])
   for (const Case& c : cases)
   {
     vtkNew<vtkGlobeMapProjection> p;
-    p->SetFromEPSG(c.Code);
+    if (c.Code == 0)
+    {
+      p->SetFromDefinition("+proj=sinu +lon_0=0 +x_0=0 +y_0=0 +R=6371007.181 +units=m +type=crs");
+    }
+    else
+    {
+      p->SetFromEPSG(c.Code);
+    }
     p->SetLongitudeWest(c.MapBox ? -180.0 : 0.5 * (c.West + c.East) - 180.0);
     double box[4] = { c.West, c.East, c.South, c.North };
     if (!c.MapBox)

@@ -106,6 +106,7 @@ namespace D = vtkGlobeShaderMath::d;
       { "globe_projectTransverseMercator", NS::globe_projectTransverseMercator },                \
       { "globe_projectConformalConic", NS::globe_projectConformalConic },                        \
       { "globe_projectAlbersEqualArea", NS::globe_projectAlbersEqualArea },                      \
+      { "globe_projectSinusoidal", NS::globe_projectSinusoidal },                                \
     {                                                                                            \
       "globe_projectCylindricalEqualArea", NS::globe_projectCylindricalEqualArea                 \
     }                                                                                            \
@@ -335,6 +336,23 @@ Raster PolarInset(const std::string& name, int code, double lon, double lat, dou
   return { name, configure, { xy[0], xy[1], halfSize, halfSize }, true };
 }
 
+// MODIS's sinusoidal grid, from its PROJ string (it has no EPSG code).
+constexpr double ModisRadius = 6371007.181;
+Setup Modis()
+{
+  return [](vtkGlobeMapProjection* p) {
+    p->SetFromDefinition("+proj=sinu +lon_0=0 +x_0=0 +y_0=0 +R=6371007.181 +units=m +no_defs +type=crs");
+  };
+}
+
+// MODIS tile hHHvVV: 36 x 18 tiles of 1111950.519667 m over the sinusoidal map.
+Raster ModisTile(const std::string& name, int h, int v)
+{
+  const double tile = 1111950.519667, west = -Pi * ModisRadius, north = 0.5 * Pi * ModisRadius;
+  return { name, Modis(),
+    { west + (h + 0.5) * tile, north - (v + 0.5) * tile, 0.5 * tile, 0.5 * tile }, true };
+}
+
 // Points outside the valid domain come back as (-1, -1).
 bool CheckOutsideDomain()
 {
@@ -472,6 +490,21 @@ int TestGlobeMapProjectionShader(int, char*[])
         { "EPSG:6933 0..360 +-85", EPSG(6933, 0.0), { 0, 360, -85, 85 } },
         { "EPSG:6933 0.1 deg at 179.99, 80N", EPSG(6933, 0.0), { 179.94, 180.04, 79.95, 80.05 } },
         { "EPSG:6933 1 deg at the south pole", EPSG(6933), { 10.0, 11.0, -90.0, -89.0 } },
+      } },
+    { "sinusoidal (MODIS sphere)",
+      {
+        { "MODIS global mosaic", Modis(), { 0.0, 0.0, Pi * ModisRadius, 0.5 * Pi * ModisRadius },
+          true },
+        ModisTile("MODIS tile h08v05", 8, 5),
+        ModisTile("MODIS tile h35v08 (across the cut)", 35, 8),
+        ModisTile("MODIS tile h17v00 (the north pole)", 17, 0),
+        PolarInset("MODIS 1 deg at 60S, -100", 0, -100.0, -60.0, 0.5 * ModisRadius * Deg, Modis()),
+        PolarInset("MODIS 0.1 deg at 80N, 179.99", 0, 179.99, 80.0, 0.05 * ModisRadius * Deg, Modis()),
+        PolarInset("MODIS 0.1 deg at 89.9S, 0", 0, 0.0, -89.9, 0.05 * ModisRadius * Deg, Modis()),
+        { "sinusoidal lon0 -60, FE 1e6, global", [](vtkGlobeMapProjection* p) {
+            p->SetToSinusoidal(6371007.181, -60.0, 1e6, -2e6);
+          },
+          { 1e6, -2e6, Pi * ModisRadius, 0.5 * Pi * ModisRadius }, true },
       } },
   };
 

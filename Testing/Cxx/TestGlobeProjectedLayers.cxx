@@ -19,6 +19,8 @@
 //  E. The same for the families PROJ's database supplies: cylindrical equal-area (EASE-Grid 2.0
 //     Global) as the base, Lambert conformal conic (Lambert-93), Albers (Conus) and polar
 //     Lambert azimuthal equal-area (EASE-Grid 2.0 South), drawn without reprojection.
+//  F. The same for a CRS without an EPSG code: MODIS's sinusoidal grid (a PROJ string), across
+//     the map's cut at the antimeridian and near a pole.
 #include "vtkGlobeRenderingTestHelpers.h"
 #include "vtkGlobeTestHelpers.h"
 
@@ -400,6 +402,35 @@ void PartConicsAndEqualArea()
     what);
 }
 
+// A CRS without an EPSG code: MODIS's sinusoidal grid (its PROJ string, as the reader keeps a
+// GeoTIFF's user-defined keys), whole map, over the antimeridian (the map's cut) and a pole.
+void PartSinusoidal()
+{
+  std::printf("F. MODIS sinusoidal, a CRS without an EPSG code (nearest-filtered texels):\n");
+  vtkGlobeTest::Scene scene;
+  scene.Mapper->LightingOff();
+  const double R = 6371007.181, pi = 3.14159265358979323846;
+  // 72 x 36 square texels over the whole map (x +-pi R, y +-pi R / 2); those outside the
+  // sinusoids at +-180 degrees are never shown.
+  auto modis = vtkGlobeTest::ProjectedImage(0, 72, 36, -pi * R, 0.5 * pi * R, 2.0 * pi * R / 72.0,
+    [](int i, int j) { return vtkGlobeTest::TexelColour(0, i, j); },
+    "+proj=sinu +lon_0=0 +x_0=0 +y_0=0 +R=6371007.181 +units=m +no_defs +type=crs");
+  scene.Mapper->AddLayer(modis);
+  const std::vector<ViewPoint> views = { { { 0.0, 20.0, 8.0e6 }, { 0.0, 30.0, 0.0 } },
+    { { 175.0, 10.0, 6.0e6 }, { 179.5, 20.0, 0.0 } }, { { 30.0, 70.0, 4.0e6 }, { 0.0, 88.0, 0.0 } },
+    { { -100.0, -50.0, 5.0e6 }, { -120.0, -70.0, 0.0 } } };
+  int checked = 0;
+  std::vector<int> perLayer;
+  const int wrong = WrongTexels(scene, { modis }, views, checked, perLayer);
+  char what[240];
+  std::snprintf(what, sizeof(what),
+    "%d pixels: %d show another texel than the exact projection's; EPSG %d, %d active layer(s)",
+    checked, wrong, modis->GetEPSG(), scene.Mapper->GetLayerSet()->GetNumberOfActiveColorLayers());
+  Check.Expect(checked > 20000 && wrong == 0 && modis->GetEPSG() == 0 && !modis->IsReprojected() &&
+      scene.Mapper->GetLayerSet()->GetNumberOfActiveColorLayers() == 1,
+    what);
+}
+
 void PartQualityWeight()
 {
   std::printf("D. Kooima's projection-quality weight (two layers averaged, lighting off):\n");
@@ -463,6 +494,7 @@ int TestGlobeProjectedLayers(int argc, char* argv[])
   PartPolarCap(argc, argv, image);
   PartSynthetic();
   PartConicsAndEqualArea();
+  PartSinusoidal();
   PartQualityWeight();
   return Check.Result() == 0 && image ? 0 : 1;
 }

@@ -13,6 +13,7 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkSmartPointer.h"
+#include "vtkStringArray.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <array>
@@ -21,9 +22,18 @@
 namespace vtkGlobeTest
 {
 /// The reader's georeferencing field data on `image`: projected, EPSG:`epsg`, north-west outer
-/// corner (west, north) and square pixels of `pixel` map units.
-inline void Georeference(vtkImageData* image, int epsg, double west, double north, double pixel)
+/// corner (west, north) and square pixels of `pixel` map units. EPSG 0 with a CRS definition
+/// `crs`: a CRS without a code (the reader's GlobeCRS).
+inline void Georeference(
+  vtkImageData* image, int epsg, double west, double north, double pixel, const char* crs = nullptr)
 {
+  if (crs)
+  {
+    vtkNew<vtkStringArray> definition;
+    definition->SetName(vtkGlobeRasterReader::GetCRSDefinitionArrayName());
+    definition->InsertNextValue(crs);
+    image->GetFieldData()->AddArray(definition);
+  }
   vtkNew<vtkIntArray> model, code;
   model->SetName(vtkGlobeRasterReader::GetModelTypeArrayName());
   model->InsertNextValue(vtkGlobeRasterReader::Projected);
@@ -68,7 +78,8 @@ inline vtkSmartPointer<vtkGlobeLayer> ProjectedHeights(int epsg, int w, int h, d
 /// An in-memory projected RGB raster: colour(i, j) for column i (east) and row j (north
 /// first), its north-west outer corner and pixel size in metres, as a reader would give it.
 inline vtkSmartPointer<vtkGlobeLayer> ProjectedImage(int epsg, int w, int h, double west, double north,
-  double pixel, const std::function<std::array<unsigned char, 3>(int, int)>& colour)
+  double pixel, const std::function<std::array<unsigned char, 3>(int, int)>& colour,
+  const char* crs = nullptr)
 {
   vtkNew<vtkImageData> image;
   image->SetExtent(0, w - 1, 0, h - 1, 0, 0);
@@ -88,7 +99,7 @@ inline vtkSmartPointer<vtkGlobeLayer> ProjectedImage(int epsg, int w, int h, dou
       }
     }
   }
-  Georeference(image, epsg, west, north, pixel);
+  Georeference(image, epsg, west, north, pixel, crs);
   auto layer = vtkSmartPointer<vtkGlobeLayer>::New();
   layer->SetRoleToColor();
   layer->SetInputData(image);

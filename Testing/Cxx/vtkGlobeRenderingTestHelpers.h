@@ -298,12 +298,13 @@ inline bool LayerUV(vtkGlobeLayer* layer, double lon, double lat, double& u, dou
 {
   if (layer->GetModelType() == vtkGlobeLayer::Projected)
   {
-    static std::map<int, vtkSmartPointer<vtkGlobeMapProjection>> projections;
-    auto& projection = projections[layer->GetEPSG()];
+    // By EPSG code, or by definition for a CRS without one.
+    static std::map<std::string, vtkSmartPointer<vtkGlobeMapProjection>> projections;
+    auto& projection = projections[std::to_string(layer->GetEPSG()) + layer->GetCRSDefinition()];
     if (!projection)
     {
       projection = vtkSmartPointer<vtkGlobeMapProjection>::New();
-      projection->SetFromEPSG(layer->GetEPSG());
+      layer->GetMapProjection(projection);
     }
     double xy[2], origin[2], pixel[2];
     if (!projection->IsInValidDomain(lon, lat) || !projection->Forward(lon, lat, xy))

@@ -19,6 +19,8 @@
 // and the equal-area kinds are functions of q(lat) (the authalic function) and lambda:
 //   cylindrical:      (dLon, q - q_r)                    linear
 //   Albers, polar Lambert azimuthal: F = F_r * (sqrt(1 + K (q - q_r)) exp(i n dLon) - 1).
+// and the sinusoidal projection (a sphere, MODIS) is
+//   (dLon cos lat + (lon_r - lon0)(cos lat - cos lat_r), dLat)   cos difference as a product
 // Inputs are hi + lo pairs (lo may be 0): differences to the reference are taken hi - hi
 // (exact by Sterbenz where it matters) plus lo - lo.
 //
@@ -32,7 +34,8 @@
 //       lon_r - lon0, xi'_r, eta'_r), p6 = (C_r xi, C_r eta, alpha_1, alpha_2); Lambert
 //       conformal conic: p5 = (t(lat_r), n), p6.x = lon_r - lon0; Albers and Lambert
 //       azimuthal equal-area: p5 = (K, n), K = -(1 - e^2) a^2 / (n rho_r^2), p6 = (lon_r -
-//       lon0, (1 - e^2) / (q_p - q_r) for the azimuthal projection, else 0)).
+//       lon0, (1 - e^2) / (q_p - q_r) for the azimuthal projection, else 0); sinusoidal:
+//       p6.x = lon_r - lon0).
 // Points outside the domain return (-1, -1): outside every raster.
 //
 // Transcendentals are polynomials here (GLSL leaves sin/exp/log/atan accuracy to the driver;
@@ -574,6 +577,45 @@ vec2 globe_projectCylindricalEqualArea(float lonHi, float lonLo, float latHi, fl
   }
   return globe_projectionTexture(
     s.DLon, globe_equalAreaDifference(s.DSin, s.SinLat, p1.z, p2.z), p2, p3);
+}
+
+// Sinusoidal on a sphere (MODIS): x = R (lon - lon0) cos lat, y = R lat. The offset from the
+// reference is X = dLon cos lat + (lon_r - lon0)(cos lat - cos lat_r), Y = dLat, with
+// cos lat - cos lat_r = -2 sin(lat_r + dLat / 2) sin(dLat / 2): relatively accurate for small
+// offsets. lon - lon0 lies in [-pi, pi): a point across the map's cut (the meridian opposite
+// lon0) from the reference is a turn of longitude away from it.
+vec2 globe_projectSinusoidal(float lonHi, float lonLo, float latHi, float latLo, vec4 p0,
+  vec4 p1, vec4 p2, vec4 p3, vec4 p4, vec4 p5, vec4 p6)
+{
+  if (!globe_projectionInDomain(lonHi + lonLo, latHi + latLo, p4))
+  {
+    return vec2(-1.0f, -1.0f);
+  }
+  float dLon = 0.0f;
+  float dLat = 0.0f;
+  globe_projectionDelta(lonHi, lonLo, latHi, latLo, p0, p1, dLon, dLat);
+  // float(pi/2) lies 4.4e-8 rad beyond the pole, and y is linear in the latitude: clamp.
+  dLat = clamp(dLat, (-GLOBE_PROJ_HALF_PI_HI - p1.x) + (-GLOBE_PROJ_HALF_PI_LO - p1.y),
+    (GLOBE_PROJ_HALF_PI_HI - p1.x) + (GLOBE_PROJ_HALF_PI_LO - p1.y));
+  float fromCentral = p6.x + dLon;
+  if (fromCentral >= GLOBE_PROJ_PI_HI)
+  {
+    dLon = (dLon - 2.0f * GLOBE_PROJ_PI_HI) - 2.0f * GLOBE_PROJ_PI_LO;
+  }
+  else if (fromCentral < -GLOBE_PROJ_PI_HI)
+  {
+    dLon = (dLon + 2.0f * GLOBE_PROJ_PI_HI) + 2.0f * GLOBE_PROJ_PI_LO;
+  }
+  float sinLat = 0.0f;
+  float cosLat = 0.0f;
+  globe_latitudeSinCos(latHi, latLo, sinLat, cosLat);
+  float sm = 0.0f;
+  float cm = 0.0f;
+  globe_sinCos(p1.x + (p1.y + 0.5f * dLat), sm, cm);
+  float sh = 0.0f;
+  float ch = 0.0f;
+  globe_sinCos(0.5f * dLat, sh, ch);
+  return globe_projectionTexture(dLon * cosLat - 2.0f * p6.x * sm * sh, dLat, p2, p3);
 }
 
 // Transverse Mercator (UTM): Krueger's series to alpha_2 on the conformal sphere's
