@@ -256,6 +256,16 @@ void vtkGlobeCompositePass::Render(const vtkRenderState* s)
     }
   }
   p->SetUniformMatrix4x4("globeClipToEye", clipToEye);
+  if (this->TerrainRefinement > 0)
+  {
+    const float chord[4] = { static_cast<float>(this->Chord[0]), static_cast<float>(this->Chord[1]),
+      static_cast<float>(this->Chord[2]), static_cast<float>(this->Chord[3]) };
+    const float clipW[4] = { static_cast<float>(this->ClipW[0]), static_cast<float>(this->ClipW[1]),
+      static_cast<float>(this->ClipW[2]), static_cast<float>(this->ClipW[3]) };
+    p->SetUniform4f("globeChord", chord);
+    p->SetUniform4f("globeClipW", clipW);
+    p->SetUniform3f("globeDepthMap", f3(this->DepthMap).data());
+  }
   p->SetUniform2f("globeSpecular",
     std::array<float, 2>{ static_cast<float>(this->SpecularStrength),
       static_cast<float>(this->SpecularPower) }
@@ -303,6 +313,15 @@ void vtkGlobeCompositePass::SetView(const double eye[3], const double clipToEye[
   std::copy(clipToEye, clipToEye + 16, this->ClipToEye);
 }
 
+void vtkGlobeCompositePass::SetRefinementFrame(
+  const double chord[4], const double clipW[4], const double depthMap[3])
+{
+  // Not Modified(): per frame, like the view.
+  std::copy(chord, chord + 4, this->Chord);
+  std::copy(clipW, clipW + 4, this->ClipW);
+  std::copy(depthMap, depthMap + 3, this->DepthMap);
+}
+
 int vtkGlobeCompositePass::GetRoles()
 {
   // Night lights and water masks only matter to the effects that use them, lit.
@@ -335,6 +354,7 @@ std::string vtkGlobeCompositePass::GetShaderKey()
   key += this->Atmosphere ? "A" : "";
   key += this->Graticule ? "G" : "";
   key += this->Contours ? "C" : "";
+  key += this->TerrainRefinement > 0 ? "R" + std::to_string(this->TerrainRefinement) : "";
   return key;
 }
 
@@ -441,8 +461,12 @@ std::string vtkGlobeCompositePass::BuildFragmentShader()
              "  }\n";
   }
   using vtkGlobeShaderSources::Replace;
-  const std::string defines =
+  std::string defines =
     layers->GetHighPrecisionGeodetic() ? "#define GLOBE_HIGH_PRECISION_GEODETIC\n" : "";
+  if (this->TerrainRefinement > 0)
+  {
+    defines += "#define GLOBE_REFINE " + std::to_string(this->TerrainRefinement) + "\n";
+  }
   std::string fs =
     Replace(vtkGlobeCompositeFS, "//GLOBE::Math", defines + vtkGlobeShaderSources::Math());
   fs = Replace(fs, "//GLOBE::Layers", layers->GetShaderCode(this->GetRoles()));
@@ -467,6 +491,7 @@ void vtkGlobeCompositePass::PrintSelf(ostream& os, vtkIndent indent)
      << (this->NightLights ? "NightLights " : "") << (this->SpecularWater ? "SpecularWater " : "")
      << (this->Atmosphere ? "Atmosphere " : "") << (this->Graticule ? "Graticule " : "")
      << (this->Contours ? "Contours" : "") << "\n";
+  os << indent << "TerrainRefinement: " << this->TerrainRefinement << "\n";
   os << indent << "ShaderKey: " << this->ShaderKey << "\n";
   os << indent << "NumberOfShaderBuilds: " << this->NumberOfShaderBuilds << "\n";
 }

@@ -133,6 +133,26 @@ public:
    */
   void SetView(const double eye[3], const double clipToEye[16]);
 
+  ///@{
+  /**
+   * Per-pixel terrain refinement (vtkGlobeMapper::SetTerrainRefinement): Newton steps along
+   * each pixel's view ray from the rasterized mesh to the composed heights, 0 (off) to 4.
+   */
+  vtkSetClampMacro(TerrainRefinement, int, 0, 4);
+  vtkGetMacro(TerrainRefinement, int);
+  ///@}
+
+  /**
+   * What the refinement needs of the frame (the mapper sets it with the G-buffer):
+   * - chord[4]: (r'x, r'y, r'z, C) such that 1 - |u|^2 = -C - 2 o.r' - o.o for the G-buffer's
+   *   offset o, u the unnormalized direction of the mesh point (its shortfall from the unit
+   *   sphere is the chord's sag; Documentation/rendering.md "Terrain refinement");
+   * - clipW[4]: the row of the eye-relative-body -> clip matrix that gives clip w;
+   * - depthMap[3]: (0, A, B) for perspective depth d = A - B / w, (1, S, 0) for logarithmic
+   *   depth d = S log2(1 + w).
+   */
+  void SetRefinementFrame(const double chord[4], const double clipW[4], const double depthMap[3]);
+
   /// The description the program is generated from (layers and effects).
   std::string GetShaderKey();
 
@@ -178,6 +198,10 @@ protected:
   double HeightColorRange[2] = { 0.0, 1.0 };
   double Eye[3] = { 0, 0, 0 };
   double ClipToEye[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+  int TerrainRefinement = 0;
+  double Chord[4] = { 0, 0, 0, -1 };
+  double ClipW[4] = { 0, 0, 0, 0 };
+  double DepthMap[3] = { 0, 0, 0 };
 
   vtkOpenGLQuadHelper* Quad = nullptr;
   std::string ShaderKey;

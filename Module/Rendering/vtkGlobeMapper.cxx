@@ -382,6 +382,21 @@ bool vtkGlobeMapper::GetHighPrecisionGeodetic()
   return this->Internals->Layers->GetHighPrecisionGeodetic();
 }
 
+void vtkGlobeMapper::SetTerrainRefinement(int steps)
+{
+  steps = std::max(0, std::min(4, steps));
+  if (this->Internals->Composite->GetTerrainRefinement() != steps)
+  {
+    this->Internals->Composite->SetTerrainRefinement(steps);
+    this->Modified();
+  }
+}
+
+int vtkGlobeMapper::GetTerrainRefinement()
+{
+  return this->Internals->Composite->GetTerrainRefinement();
+}
+
 void vtkGlobeMapper::SetFootprintFiltering(bool on)
 {
   if (this->Internals->Layers->GetFootprintFiltering() != on)
@@ -1113,6 +1128,53 @@ bool vtkGlobeMapper::RenderGBuffer(vtkRenderer* ren, vtkActor* act, int width, i
     vtkMatrix4x4::Invert(act->GetMatrix(), worldToBody);
     worldToBody->MultiplyPoint(eyeBody, eyeBody);
     in.Composite->SetView(eyeBody, clipToEye->GetData());
+  }
+  {
+    // The refinement's frame (vtkGlobeCompositePass::SetRefinementFrame). Chord: the G-buffer
+    // holds o = (p - A nadir) / rp in float (the raster shader's floats A, nadir, rp), so the
+    // mesh point's direction is u = ref + o - delta with ref = -nadir (float) and delta what
+    // the floats miss of the exact eye; 1 - |u|^2 = -C - 2 o.(ref - delta) - o.o.
+    double chord[4] = { 0.0, 0.0, 0.0, -1.0 }; // without offsets: 1 - |o|^2
+    if (highPrecision)
+    {
+      const double* nadir = in.Grid->GetNadir();
+      const double rp = in.Grid->GetPrimaryRadius(), alt = in.Grid->GetAltitude();
+      const double rpF = static_cast<float>(rp), altF = static_cast<float>(alt);
+      double ref[3], delta[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        const double nadirF = static_cast<float>(nadir[k]);
+        ref[k] = -nadirF;
+        delta[k] = -nadirF - altF * nadirF / rpF + (rp + alt) * nadir[k] / rp;
+      }
+      const double refRef = vtkMath::Dot(ref, ref), refDelta = vtkMath::Dot(ref, delta);
+      chord[3] = (refRef - 1.0) - 2.0 * refDelta + vtkMath::Dot(delta, delta);
+      for (int k = 0; k < 3; ++k)
+      {
+        chord[k] = ref[k] - delta[k];
+      }
+    }
+    // Clip w of an eye-relative body point, and the window depth as a function of it.
+    const double clipW[4] = { eyeToClip->GetElement(3, 0), eyeToClip->GetElement(3, 1),
+      eyeToClip->GetElement(3, 2), eyeToClip->GetElement(3, 3) };
+    double depthMap[3] = { 0.0, 0.0, 0.0 };
+    if (camera->GetParallelProjection())
+    {
+      depthMap[0] = 2.0; // depth linear in the view distance: not refined
+    }
+    else if (depthPass && depthPass->GetMode() == vtkGlobeDepthPass::Logarithmic)
+    {
+      depthMap[0] = 1.0;
+      depthMap[1] = 1.0 / std::log2(1.0 + depthPass->GetViewDistance(1.0, camera));
+    }
+    else
+    {
+      vtkMatrix4x4* projection =
+        camera->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1);
+      depthMap[1] = 0.5 - 0.5 * projection->GetElement(2, 2);
+      depthMap[2] = -0.5 * projection->GetElement(2, 3);
+    }
+    in.Composite->SetRefinementFrame(chord, clipW, depthMap);
   }
   float columnMajor[16];
   for (int r = 0; r < 4; ++r)

@@ -207,6 +207,21 @@ public:
 
   ///@{
   /**
+   * Per-pixel terrain refinement (Documentation/rendering.md "Terrain refinement"): the
+   * number of Newton steps (0 to 4) each pixel takes along its view ray, from the point where
+   * the ray meets the rasterized mesh to where it meets the heights composed at the pixel's
+   * footprint; the pixel's layers are composed there and its depth is written there. It
+   * removes what the mesh adds to the error: the sag of flat triangles on the curved body and
+   * the heights between grid points, so the terrain's error no longer depends on the grid.
+   * Each step composes the height layers once more per pixel. 0 (off) leaves the rasterized
+   * surface as it is. Ignored with a parallel projection.
+   */
+  void SetTerrainRefinement(int steps);
+  int GetTerrainRefinement();
+  ///@}
+
+  ///@{
+  /**
    * Layers filtered to each grid point's and pixel's footprint (default on;
    * Documentation/composition.md "Filtering to the footprint"): distant terrain does not alias
    * or shimmer. Off: whole-raster layers are read at level 0 whatever the footprint (each value

@@ -38,6 +38,7 @@ list(APPEND globe_rendering_tests
 list(APPEND globe_rendering_tests
   TestGlobeJitter.cxx
   TestGlobeSatelliteLimb.cxx
+  TestGlobeTerrainRefinement.cxx
   TestGlobeTemporalStability.cxx
   TestGlobeFeatherReach.cxx
   TestGlobeColorMatch.cxx)

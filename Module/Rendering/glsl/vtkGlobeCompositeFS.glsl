@@ -30,6 +30,12 @@ uniform vec3 globeBaseColor;
 // coordinates (directions only).
 uniform vec3 globeEye;
 uniform mat4 globeClipToEye;
+#ifdef GLOBE_REFINE
+// vtkGlobeCompositePass::SetRefinementFrame.
+uniform vec4 globeChord;
+uniform vec4 globeClipW;
+uniform vec3 globeDepthMap;
+#endif
 
 // The step of the G-buffer's direction (or offset: their differences are the same) to the
 // pixel `k` pixels along `axis`; 1e30 where that pixel is off the window or not the globe's.
@@ -89,6 +95,90 @@ void main()
   // has them.
   vec2 gradient;
   float h = globe_composeHeight(lonHi, lonLo, latHi, latLo, gradient);
+  float outDepth = depth;
+#ifdef GLOBE_REFINE
+  // Terrain refinement (Documentation/rendering.md "Terrain refinement"): Newton steps along
+  // the pixel's ray from the mesh point to the composed heights, in metres relative to the
+  // mesh point (never an absolute position); the layers are then composed at the refined
+  // (lon, lat), moved by the steps' small shifts in the lo parts, and its depth is written.
+  {
+#ifdef GLOBE_HIGH_PRECISION_GEODETIC
+    vec3 chordOffset = offset;
+#else
+    vec3 chordOffset = g.xyz;
+#endif
+    // The mesh point lies inside the unit sphere of directions by the chord's sag.
+    float s2 = -globeChord.w - 2.0 * dot(chordOffset, globeChord.xyz) - dot(chordOffset, chordOffset);
+    float shortfall = s2 / (1.0 + sqrt(max(1.0 - s2, 0.0)));
+    float height = g.w - length(s * globeRadiiScaled) * globeMaximumRadius * shortfall;
+    float a = globeMaximumRadius * globeRadiiScaled.x;
+    float b = globeMaximumRadius * globeRadiiScaled.z;
+    float e2 = 1.0 - (b * b) / (a * a);
+    // What a failed refinement returns to.
+    float lonLo0 = lonLo, latLo0 = latLo, lon0 = lon, lat0 = lat, h0 = h;
+    vec2 gradient0 = gradient;
+    vec3 n0 = n;
+    float residual0 = height - h;
+    float t = 0.0;
+    // Not with a parallel projection (globeDepthMap.x 2).
+    bool refine = covered && !isnan(residual0) && globeDepthMap.x < 1.5;
+    for (int k = 0; k < GLOBE_REFINE; ++k)
+    {
+      float sinLat = sin(lat);
+      float cosLat = max(cos(lat), 1e-6);
+      vec3 east = vec3(-sin(lon), cos(lon), 0.0);
+      vec3 north = vec3(-sinLat * cos(lon), -sinLat * sin(lon), cosLat);
+      float w = inversesqrt(1.0 - e2 * sinLat * sinLat);
+      float meridian = a * (1.0 - e2) * w * w * w + h;
+      float vertical = a * w + h;
+      float rayUp = dot(ray, n);
+      float rayEast = dot(ray, east);
+      float rayNorth = dot(ray, north);
+      // d(height - data)/dt: the ray's descent less the terrain's rise along it.
+      float rate = rayUp - gradient.x / (vertical * cosLat) * rayEast - gradient.y / meridian * rayNorth;
+      // Newton where the ray enters the terrain clearly; along a back slope (or where the
+      // slope would send the step the wrong way) the step for level terrain instead.
+      bool step = refine && rayUp < -1e-3 && abs(lat) < 1.5707;
+      float dt = step ? -(height - h) / (rate < 0.25 * rayUp ? rate : rayUp) : 0.0;
+      float dEast = dt * rayEast;
+      float dNorth = dt * rayNorth;
+      float dLon = dEast / (vertical * cosLat);
+      float dLat = dNorth / meridian;
+      // The new point's height above the (curved) ellipsoid.
+      height += dt * rayUp + 0.5 * (dEast * dEast / vertical + dNorth * dNorth / meridian);
+      lonLo += dLon;
+      latLo += dLat;
+      lon += dLon;
+      lat += dLat;
+      n = globe_normalize(n + dLon * cosLat * east + dLat * north);
+      t += dt;
+      h = globe_composeHeight(lonHi, lonLo, latHi, latLo, gradient);
+    }
+    if (!(abs(height - h) <= abs(residual0)))
+    {
+      lonLo = lonLo0;
+      latLo = latLo0;
+      lon = lon0;
+      lat = lat0;
+      h = h0;
+      gradient = gradient0;
+      n = n0;
+      t = 0.0;
+    }
+    // The depth of the refined point, as a change of the mesh point's (clip w = globeClipW . x).
+    float w0 = globeDepthMap.x < 0.5 ? globeDepthMap.z / max(globeDepthMap.y - depth, 1e-30)
+                                     : exp2(depth / globeDepthMap.y) - 1.0;
+    float dw = t * dot(globeClipW.xyz, ray);
+    float w1 = max(w0 + dw, 1e-6);
+    // log2(1 + x) for the small ratio x of the logarithmic mode, without rounding 1 + x.
+    float x = dw / (1.0 + w0);
+    float log2OnePlusX = abs(x) < 1e-3 ? x * (1.0 - 0.5 * x) * 1.4426950408889634 : log2(1.0 + x);
+    outDepth = t == 0.0 ? depth
+      : globeDepthMap.x < 0.5 ? depth + globeDepthMap.z * dw / (w0 * w1)
+                              : depth + globeDepthMap.y * log2OnePlusX;
+    outDepth = clamp(outDepth, 0.0, 1.0);
+  }
+#endif
   vec3 albedo = globeBaseColor;
   float lines = 0.0;
   vec3 lineColor = vec3(0.0);
@@ -115,5 +205,5 @@ void main()
   color = mix(color, lineColor, lines);
   gl_FragData[0] = vec4(color, 1.0);
   // Depth hook: the G-buffer depth is already in the scene's depth mode (vtkGlobeDepthPass).
-  gl_FragDepth = depth;
+  gl_FragDepth = outDepth;
 }
