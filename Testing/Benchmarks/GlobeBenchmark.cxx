@@ -7,7 +7,8 @@
 // `bash Utilities/globe.sh bench` runs both.
 //
 //   GlobeBenchmark [--quick] [--frames N] [--json PATH] [--scene NAME]... [--window WxH]
-//                  [--effects-only] [--grid-only] [--no-matrix] [--conditions TEXT] [--help]
+//                  [--effects-only] [--grid-only] [--refinement-only] [--no-matrix]
+//                  [--conditions TEXT] [--help]
 //
 // Scenes (window 800 x 600 unless --window; one window, renderer and globe for everything):
 //   earth      the whole Earth from 22,000 km;
@@ -27,6 +28,8 @@
 //   composition  colour layers nearest, feather 0 / 32 texels (all layers), Kooima's projection
 //                weight (colour layers);
 //   effects      unlit, each effect alone on top of lighting, all;
+//   refinement   per-pixel terrain refinement, 1..3 steps at the baseline grid, 2 at the
+//                automatic grid and at 128^2 (with 128^2 unrefined next to it);
 //   naive        vtkTexturedSphereSource (256 x 128) and global lon/lat meshes warped by the
 //                composed heights (double points), VTK's perspective depth, with the clipping
 //                range the policy gives the globe there (VTK's own range, fitted to the body,
@@ -164,6 +167,7 @@ struct Options
   bool Quick = false;
   bool EffectsOnly = false;
   bool GridOnly = false;
+  bool RefinementOnly = false;
   bool Matrix = true;
   int Frames = 30;
   int Warmup = 5;
@@ -804,6 +808,7 @@ void Benchmark::ResetDefaults()
     }
   }
   this->Scene.Mapper->SetHighPrecisionGeodetic(true);
+  this->Scene.Mapper->SetTerrainRefinement(0);
 }
 
 /**
@@ -852,6 +857,43 @@ std::vector<Setting> Benchmark::Settings()
     {
       list.push_back(d);
     }
+  }
+  // Per-pixel terrain refinement (vtkGlobeMapper::SetTerrainRefinement): what each Newton step
+  // buys and costs, at the baseline grid, at the automatic one, and at a coarse grid (the
+  // error no longer follows the grid's cells).
+  if (!this->Opt.EffectsOnly && !this->Opt.GridOnly)
+  {
+    for (int steps : { 1, 2, 3 })
+    {
+      if (this->Opt.Quick && steps != 2)
+      {
+        continue;
+      }
+      list.push_back({ "refinement", std::to_string(steps) + (steps > 1 ? " steps" : " step"),
+        [m, steps] { m->SetTerrainRefinement(steps); } });
+    }
+    if (!this->Opt.Quick)
+    {
+      list.push_back({ "refinement", "2 steps, automatic grid", [m] {
+                        m->SetGridPixelsPerCell(1.6);
+                        m->SetTerrainRefinement(2);
+                      } });
+      list.push_back({ "refinement", "2 steps, grid 128^2", [m] {
+                        m->SetGridResolution(128);
+                        m->SetTerrainRefinement(2);
+                      } });
+      list.push_back({ "refinement", "none, grid 128^2", [m] { m->SetGridResolution(128); } });
+    }
+  }
+  if (this->Opt.RefinementOnly)
+  {
+    list.erase(std::remove_if(list.begin(), list.end(),
+                 [](const Setting& s) {
+                   return s.Family != "baseline" && s.Family != "refinement" &&
+                     s.Name != "automatic (1.6 px per cell)";
+                 }),
+      list.end());
+    return list;
   }
   // The float path the hi/lo geodetic coordinates replaced (Documentation/rendering.md
   // "Geodetic precision"): what the precision costs and buys.
@@ -2087,7 +2129,8 @@ void Usage(const char* program)
 {
   std::printf(
     "usage: %s [--quick] [--frames N] [--json PATH] [--scene NAME]... [--window WxH]\n"
-    "          [--effects-only] [--grid-only] [--no-matrix] [--conditions TEXT] [--help]\n"
+    "          [--effects-only] [--grid-only] [--refinement-only] [--no-matrix]\n"
+    "          [--conditions TEXT] [--help]\n"
     "  Sweeps the PGM globe's settings (grid, grid relative to the window, depth mode and\n"
     "  clipping, composition, effects) on the scenes earth, rainier, everest and satellite, with\n"
     "  VTK's naive globes (a textured sphere, warped lon/lat meshes) on the same scenes; frame\n"
@@ -2097,6 +2140,8 @@ void Usage(const char* program)
     "  --effects-only  only the baseline and the effects, at the whole Earth, 1024x768\n"
     "  --grid-only     only the baseline (grid 512^2), the automatic grid and the textured\n"
     "                  sphere, without the matrix (with --window: the automatic grid's rows)\n"
+    "  --refinement-only  only the baseline, the automatic grid and the terrain refinement\n"
+    "                  rows, without naive globes or the matrix\n"
     "  --scene NAME    only this scene (repeatable)\n"
     "  --window WxH    the scenes' window (default 800x600)\n"
     "  --no-matrix     skip the grid x window matrix\n"
@@ -2127,6 +2172,12 @@ int main(int argc, char* argv[])
     else if (arg == "--grid-only")
     {
       options.GridOnly = true;
+    }
+    else if (arg == "--refinement-only")
+    {
+      options.RefinementOnly = true;
+      options.Matrix = false;
+      options.Meshes.clear();
     }
     else if (arg == "--no-matrix")
     {
