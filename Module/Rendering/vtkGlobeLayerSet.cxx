@@ -1463,6 +1463,16 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
           s << "  " << lon << ".x -= floor(" << lon << ".x + 0.5);\n"
             << "  " << lat << ".x -= floor(" << lat << ".x + 0.5);\n";
         }
+        else if (e->Projection && (e->Projection->GetKind() == vtkGlobeMapProjection::Sinusoidal ||
+                   e->Projection->GetKind() == vtkGlobeMapProjection::LambertConformalConic ||
+                   e->Projection->GetKind() == vtkGlobeMapProjection::AlbersEqualArea ||
+                   e->Projection->GetKind() == vtkGlobeMapProjection::LambertAzimuthalEqualArea))
+        {
+          // A map cut opposite the central meridian: a step east of a point next to it lands
+          // on the map's other side. The step west then gives the derivative.
+          s << "  {\n    vec2 west = uv" << i << " - " << UV(e, p, At(hp, "-1e-4"), hp) << ";\n"
+            << "    if (dot(west, west) < dot(" << lon << ", " << lon << ")) " << lon << " = west;\n  }\n";
+        }
         s << "  " << lon << " /= 1e-4;\n  " << lat << " /= lat > 0.0 ? -1e-4 : 1e-4;\n";
       }
       // In the grid and screen passes, the footprint is the step towards the nearer neighbour

@@ -19,8 +19,9 @@
 //  E. The same for the families PROJ's database supplies: cylindrical equal-area (EASE-Grid 2.0
 //     Global) as the base, Lambert conformal conic (Lambert-93), Albers (Conus) and polar
 //     Lambert azimuthal equal-area (EASE-Grid 2.0 South), drawn without reprojection.
-//  F. The same for a CRS without an EPSG code: MODIS's sinusoidal grid (a PROJ string), across
-//     the map's cut at the antimeridian and near a pole.
+//  F. The same for a CRS without an EPSG code: MODIS's sinusoidal grid (a PROJ string; in the
+//     Streamed. variant a PNG whose .prj holds it, paged), across the map's cut at the
+//     antimeridian and near a pole.
 #include "vtkGlobeRenderingTestHelpers.h"
 #include "vtkGlobeTestHelpers.h"
 
@@ -412,12 +413,28 @@ void PartSinusoidal()
   const double R = 6371007.181, pi = 3.14159265358979323846;
   // 72 x 36 square texels over the whole map (x +-pi R, y +-pi R / 2); those outside the
   // sinusoids at +-180 degrees are never shown.
-  auto modis = vtkGlobeTest::ProjectedImage(0, 72, 36, -pi * R, 0.5 * pi * R, 2.0 * pi * R / 72.0,
-    [](int i, int j) { return vtkGlobeTest::TexelColour(0, i, j); },
-    "+proj=sinu +lon_0=0 +x_0=0 +y_0=0 +R=6371007.181 +units=m +no_defs +type=crs");
+  const char* crs = "+proj=sinu +lon_0=0 +x_0=0 +y_0=0 +R=6371007.181 +units=m +no_defs +type=crs";
+  const auto colour = [](int i, int j) { return vtkGlobeTest::TexelColour(0, i, j); };
+  // In the Streamed. variant: a PNG with a world file and the PROJ string as its .prj, paged.
+  vtkSmartPointer<vtkGlobeLayer> modis;
+  if (vtkGlobeTest::Streamed())
+  {
+    modis = vtkSmartPointer<vtkGlobeLayer>::New();
+    modis->SetFileName(vtkGlobeTest::WriteWorldFilePNG(std::string(VTKGLOBE_TEMP_DIR) + "/modis_sinusoidal",
+      0, 72, 36, -pi * R, 0.5 * pi * R, 2.0 * pi * R / 72.0, colour, crs)
+                         .c_str());
+    modis->SetRoleToColor();
+    modis->SetStreamingToOn();
+    modis->SetFeatherWidth(0.0);
+    modis->SetInterpolationToNearest();
+  }
+  else
+  {
+    modis = vtkGlobeTest::ProjectedImage(0, 72, 36, -pi * R, 0.5 * pi * R, 2.0 * pi * R / 72.0, colour, crs);
+  }
   scene.Mapper->AddLayer(modis);
   const std::vector<ViewPoint> views = { { { 0.0, 20.0, 8.0e6 }, { 0.0, 30.0, 0.0 } },
-    { { 175.0, 10.0, 6.0e6 }, { 179.5, 20.0, 0.0 } }, { { 30.0, 70.0, 4.0e6 }, { 0.0, 88.0, 0.0 } },
+    { { 177.0, 14.0, 3.0e6 }, { 179.8, 20.0, 0.0 } }, { { 0.0, 84.0, 2.0e6 }, { 0.0, 90.0, 0.0 } },
     { { -100.0, -50.0, 5.0e6 }, { -120.0, -70.0, 0.0 } } };
   int checked = 0;
   std::vector<int> perLayer;
@@ -427,8 +444,9 @@ void PartSinusoidal()
     "%d pixels: %d show another texel than the exact projection's; EPSG %d, %d active layer(s)",
     checked, wrong, modis->GetEPSG(), scene.Mapper->GetLayerSet()->GetNumberOfActiveColorLayers());
   Check.Expect(checked > 20000 && wrong == 0 && modis->GetEPSG() == 0 && !modis->IsReprojected() &&
+      modis->IsStreamed() == vtkGlobeTest::Streamed() &&
       scene.Mapper->GetLayerSet()->GetNumberOfActiveColorLayers() == 1,
-    what);
+    std::string(what) + (modis->IsStreamed() ? ", streamed" : ""));
 }
 
 void PartQualityWeight()

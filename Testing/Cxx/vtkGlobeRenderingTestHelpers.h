@@ -140,7 +140,7 @@ inline bool Streamed()
  */
 inline std::string WriteWorldFilePNG(const std::string& base, int epsg, int w, int h,
   double west, double north, double pixel,
-  const std::function<std::array<unsigned char, 3>(int, int)>& colour)
+  const std::function<std::array<unsigned char, 3>(int, int)>& colour, const char* prj = nullptr)
 {
   vtkNew<vtkImageData> image;
   image->SetDimensions(w, h, 1);
@@ -163,6 +163,12 @@ inline std::string WriteWorldFilePNG(const std::string& base, int epsg, int w, i
   world.precision(17);
   world << pixel << "\n0\n0\n" << -pixel << "\n" << west + 0.5 * pixel << "\n"
         << north - 0.5 * pixel << "\n";
+  if (prj)
+  {
+    // A CRS without a code: its definition as given (a PROJ string or WKT).
+    std::ofstream(base + ".prj") << prj;
+    return base + ".png";
+  }
   std::ofstream(base + ".prj") << "PROJCS[\"EPSG:" << epsg << "\",GEOGCS[\"WGS 84\","
                                  "DATUM[\"WGS_1984\",SPHEROID[\"WGS 84\",6378137,298.257223563]],"
                                  "PRIMEM[\"Greenwich\",0],UNIT[\"degree\",0.0174532925199433]],"
