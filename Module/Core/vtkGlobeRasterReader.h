@@ -7,8 +7,10 @@
  * or from an ESRI world file next to the image (`name.tfw`/`name.tifw`, `.pgw`/`.pngw`,
  * `.jgw`/`.jpgw`, generally the extension's first and last letters + `w`, the extension + `w`,
  * or `.wld`). A world file's projection comes from `name.prj` (WKT whose top-level
- * AUTHORITY/ID is EPSG), else from SetEPSG(); a world file without either is taken as
- * geographic WGS 84 (EPSG:4326) only when its numbers are degrees, otherwise it is an error.
+ * AUTHORITY/ID is EPSG; a WKT or PROJ string PROJ identifies with an EPSG CRS; or a projected
+ * CRS PROJ reads that matches none, kept as its definition in GlobeCRS), else from SetEPSG();
+ * a world file without either is taken as geographic WGS 84 (EPSG:4326) only when its numbers
+ * are degrees, otherwise it is an error.
  *
  * Output orientation, the VTK way: point (i, j) is the centre of a pixel, i grows east and
  * j grows NORTH, so row j = 0 is the southern row; the origin is the centre of the south-west
