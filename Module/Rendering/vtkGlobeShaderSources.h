@@ -17,6 +17,7 @@ namespace vtkGlobeShaderSources
 inline std::string Math()
 {
   return std::string("#define GLOBE_OUT(T) out T\n"
+                     "#define GLOBE_INOUT(T) inout T\n"
                      "#define GLOBE_NEWTON_TOLERANCE 4.8e-7\n") +
     globe_ellipsoid + "\n" + globe_pgm + "\n";
 }

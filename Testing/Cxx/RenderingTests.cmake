@@ -49,6 +49,10 @@ list(APPEND globe_rendering_tests
 list(APPEND globe_rendering_tests
   TestGlobeSky.cxx
   TestGlobeLimb.cxx)
+# The limb at any grid: grid points past the limb take their horizon point (issue 18's
+# refinement needs coarse grids that keep the silhouette).
+list(APPEND globe_rendering_tests
+  TestGlobeLimbCoverage.cxx)
 # Geodetic precision (issue 5): 0.5 m data at +-180 degrees and +-80 degrees as at (0, 0).
 list(APPEND globe_rendering_tests
   TestGlobeGeodeticPrecision.cxx)

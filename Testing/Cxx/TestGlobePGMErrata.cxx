@@ -15,11 +15,17 @@
 //     a float unit vector carries 6e-8 of noise and the normal angles are ~1e-8: along a grid
 //     line the vertices must move outward monotonically (a fold put long triangles under the
 //     camera, TestGlobeJitter at 1 cm).
+//  2d. Rays past the tangent (globe_pgmHorizonPoint, "The limb"): from 2 m to 200,000 km up,
+//     rays just past tau0 and pointing away from the body all give the same finite vertex,
+//     on the primary sphere (2b's bound), flagged 0.5, sampling the farthest normal angle
+//     (gamma_0 with a secondary sphere, within the float noise of its tangent hit;
+//     acos(r_p / d) without).
 //  3. E4 on Mars above 1,000 km (tau_s < b, where the printed blend returned NaN): the blend
 //     region sampled finely is finite, continuous at b and never folds back.
 #include "vtkGlobeEllipsoid.h"
 #include "vtkGlobeProjectiveGrid.h"
 #include "vtkGlobeShaderMath.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 
 #include <cmath>
@@ -244,6 +250,89 @@ int TestGlobePGMErrata(int, char*[])
       std::printf("  %.0f m over the ground: worst %.3g m, worst/bound %.3f, NaN %d\n", above, worstM,
         worst, nans);
       ok &= worst <= 1.0 && nans == 0 && grid->GetSecondaryRadius() > 0;
+    }
+  }
+
+  // 2d. Rays past the tangent take their plane's horizon point.
+  std::printf("2d. Rays past the tangent: the horizon point\n");
+  {
+    vtkNew<vtkGlobeEllipsoid> wgs84;
+    vtkNew<vtkGlobeProjectiveGrid> grid;
+    grid->SetEllipsoid(wgs84);
+    for (double above : { 2.0, 2000.0, 4.0e5, 2.2e7, 2.0e8 })
+    {
+      const double eye[3] = { 6378137.0 - 430.0 + above, 0.0, 0.0 };
+      const double corners[12] = { -1, -0.5, -0.5, -1, 0.5, -0.5, -1, 0.5, 0.5, -1, -0.5, 0.5 };
+      const double up[3] = { 0, 0, 1 };
+      grid->Update(eye, corners, up, -431.0, 8848.0);
+      const double* nadir = grid->GetNadir();
+      const double* perp = grid->GetNadirPerpendicular();
+      const double tau0 = grid->GetPrimaryTangentAngle();
+      const double rP = grid->GetPrimaryRadius(), dd = grid->GetDistance();
+      const bool secondary = grid->GetSecondaryRadius() > 0;
+      const double expected = secondary ? grid->GetMaximumNormalAngle() : std::acos(rP / dd);
+      const F::vec3 nf(static_cast<float>(nadir[0]), static_cast<float>(nadir[1]), static_cast<float>(nadir[2]));
+      const F::vec3 pf(static_cast<float>(perp[0]), static_cast<float>(perp[1]), static_cast<float>(perp[2]));
+      double worst = 0.0, worstAngle = 0.0, spread = 0.0;
+      int nans = 0, flags = 0;
+      F::vec3 first(0.0f);
+      const double omegas[] = { tau0 + 1e-6, tau0 + 1e-3, 0.5 * (tau0 + vtkMath::Pi() / 2),
+        vtkMath::Pi() / 2, 2.0, 3.1 };
+      for (double omega : omegas)
+      {
+        const F::vec3 ray(static_cast<float>(std::cos(omega) * nadir[0] + std::sin(omega) * perp[0]),
+          static_cast<float>(std::cos(omega) * nadir[1] + std::sin(omega) * perp[1]),
+          static_cast<float>(std::cos(omega) * nadir[2] + std::sin(omega) * perp[2]));
+        F::vec3 sv, p;
+        const float miss = F::globe_pgmGridPoint(ray, nf, pf, static_cast<float>(dd),
+          static_cast<float>(rP), static_cast<float>(grid->GetAltitude()), static_cast<float>(tau0),
+          static_cast<float>(grid->GetBlendStart()), static_cast<float>(grid->GetSecondaryRadius()),
+          static_cast<float>(dd - grid->GetSecondaryRadius()),
+          static_cast<float>(grid->GetSecondaryBlendStart()),
+          static_cast<float>(grid->GetSecondaryTangentAngle()), sv, p);
+        const float flag = F::globe_pgmHorizonPoint(ray, nf, pf, static_cast<float>(dd),
+          static_cast<float>(rP), static_cast<float>(grid->GetAltitude()), static_cast<float>(tau0),
+          static_cast<float>(grid->GetBlendStart()), static_cast<float>(grid->GetSecondaryRadius()),
+          static_cast<float>(dd - grid->GetSecondaryRadius()),
+          static_cast<float>(grid->GetSecondaryBlendStart()),
+          static_cast<float>(grid->GetSecondaryTangentAngle()), sv, p);
+        flags += miss == 0.0f && flag == 0.5f ? 1 : 0;
+        if (std::isnan(p.x + p.y + p.z + sv.x + sv.y + sv.z))
+        {
+          ++nans;
+          continue;
+        }
+        if (omega == omegas[0])
+        {
+          first = p;
+        }
+        spread = std::max(spread, static_cast<double>(glm::length(p - first)) * R);
+        L c[3];
+        L n2 = 0;
+        for (int k = 0; k < 3; ++k)
+        {
+          n2 += static_cast<L>(nf[k]) * nf[k];
+        }
+        L cosG = 0;
+        for (int k = 0; k < 3; ++k)
+        {
+          c[k] = -static_cast<L>(dd) * nf[k] / std::sqrt(n2) + p[k];
+          cosG -= static_cast<L>(sv[k]) * nf[k] / std::sqrt(n2);
+        }
+        const L height = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) - rP;
+        const L t = std::sqrt(static_cast<L>(p.x) * p.x + static_cast<L>(p.y) * p.y + static_cast<L>(p.z) * p.z);
+        const double bound = 16.0 / 16777216.0 * static_cast<double>(t + grid->GetAltitude()) * R + 1e-9;
+        worst = std::max(worst, std::abs(static_cast<double>(height)) * R / bound);
+        worstAngle = std::max(worstAngle,
+          std::abs(std::acos(std::max(-1.0, std::min(1.0, static_cast<double>(cosG)))) - expected));
+      }
+      std::printf("  %.4g m over the ground (%s): %d of 6 rays flagged as horizon points, "
+                  "height/bound %.3f, normal angle off by %.2e rad, spread %.3g m, NaN %d\n",
+        above, secondary ? "secondary sphere" : "no secondary sphere", flags, worst, worstAngle,
+        spread, nans);
+      // The secondary sphere's own tangent hit carries one float ulp of sin(tau_s) as a chord
+      // (as every grid ray next to tau0 does): about 2e-4 rad at 400 km.
+      ok &= flags == 6 && nans == 0 && worst <= 1.0 && worstAngle < 5e-4;
     }
   }
 

@@ -115,6 +115,27 @@ struct FrameCheck
 
 // Each covered pixel against the texels at its (lon, lat): any level (undefined otherwise),
 // and the levels within one of its ideal level, from its footprint to its neighbours.
+// The self-encoding layer's (u, v) at the exact ground point of pixel (x, y): its centre ray
+// against the ellipsoid. False when the ray misses.
+bool ExactUV(vtkGlobeTest::Scene& scene, int x, int y, std::array<double, 2>& uv)
+{
+  double eye[3], ray[3], t[2], p[3], llh[3];
+  scene.Renderer->GetActiveCamera()->GetPosition(eye);
+  vtkGlobeTest::PixelRay(scene.Renderer, x + 0.5, y + 0.5, ray);
+  if (scene.Body->IntersectRay(eye, ray, t) == 0)
+  {
+    return false;
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    p[c] = eye[c] + t[0] * ray[c];
+  }
+  scene.Body->CartesianToGeodetic(p, llh);
+  uv = { (llh[0] + 180.0) / 360.0, (90.0 - llh[1]) / 180.0 };
+  uv[0] -= std::floor(uv[0]);
+  return true;
+}
+
 FrameCheck CheckFrame(vtkGlobeTest::Scene& scene, const Levels& levels)
 {
   FrameCheck result;
@@ -136,24 +157,38 @@ FrameCheck CheckFrame(vtkGlobeTest::Scene& scene, const Levels& levels)
     }
   }
   const int n = static_cast<int>(levels.W.size());
-  for (int y = 0; y + 1 < H; ++y)
+  for (int y = 1; y + 1 < H; ++y)
   {
-    for (int x = 0; x + 1 < W; ++x)
+    for (int x = 1; x + 1 < W; ++x)
     {
       const size_t i = static_cast<size_t>(y) * W + x;
-      const size_t ix = i + 1, iy = i + W;
-      if (!(depth[i] < 1.0f && depth[ix] < 1.0f && depth[iy] < 1.0f))
+      if (!(depth[i] < 1.0f))
+      {
+        continue;
+      }
+      // The ideal footprint from the exact ground points of the pixel's four neighbours
+      // (their rays against the ellipsoid, in double: the scene has no heights), in level-0
+      // texels, as OpenGL measures it (the larger axis, central differences). Not from the
+      // G-buffer: next to the limb the mesh's points are what a grid cell across the limb
+      // allows (Documentation/rendering.md "The limb"), not the ground under each pixel.
+      std::array<double, 2> around[4];
+      bool onGround = true;
+      const int offsets[4][2] = { { -1, 0 }, { 1, 0 }, { 0, -1 }, { 0, 1 } };
+      for (int k = 0; k < 4 && onGround; ++k)
+      {
+        onGround = ExactUV(scene, x + offsets[k][0], y + offsets[k][1], around[k]);
+      }
+      if (!onGround)
       {
         continue;
       }
       ++result.Covered;
-      // The footprint in level-0 texels, as OpenGL measures it (the larger axis).
-      auto d = [&](size_t j, int k) {
-        double v = uv[j][k] - uv[i][k];
-        return k == 0 ? v - std::floor(v + 0.5) : v;
+      auto d = [&](int a, int b, int k) {
+        double v = around[b][k] - around[a][k];
+        return 0.5 * (k == 0 ? v - std::floor(v + 0.5) : v);
       };
-      const double rho = std::max(std::hypot(d(ix, 0) * levels.W[0], d(ix, 1) * levels.H[0]),
-        std::hypot(d(iy, 0) * levels.W[0], d(iy, 1) * levels.H[0]));
+      const double rho = std::max(std::hypot(d(0, 1, 0) * levels.W[0], d(0, 1, 1) * levels.H[0]),
+        std::hypot(d(2, 3, 0) * levels.W[0], d(2, 3, 1) * levels.H[0]));
       const int ideal = std::clamp(static_cast<int>(std::floor(std::log2(std::max(rho, 1e-9)) + 0.5)), 0, n - 1);
       result.IdealLow = std::min(result.IdealLow, ideal);
       result.IdealHigh = std::max(result.IdealHigh, ideal);

@@ -687,11 +687,9 @@ inline std::vector<double> MeshEdgeMap(Scene& scene)
     for (int i = 0; i < n; ++i)
     {
       const size_t k = static_cast<size_t>(j) * n + i;
-      if (!grid->ComputeGridPoint(static_cast<double>(i) / (n - 1), static_cast<double>(j) / (n - 1),
-            sdirs[k].data(), ps[k].data()))
-      {
-        continue;
-      }
+      // A miss gives its horizon point, a vertex as the shader draws it.
+      grid->ComputeGridPoint(static_cast<double>(i) / (n - 1), static_cast<double>(j) / (n - 1),
+        sdirs[k].data(), ps[k].data());
       const double* sdir = sdirs[k].data();
       double surface[3] = { sdir[0] * radii[0], sdir[1] * radii[1], sdir[2] * radii[2] };
       scene.Body->CartesianToGeodeticQuiet(surface, llhs[k].data());
@@ -715,7 +713,8 @@ inline std::vector<double> MeshEdgeMap(Scene& scene)
       dLon -= 360.0 * std::floor(dLon / 360.0 + 0.5);
       const double dLat = o[1] - llhs[k][1];
       const double l = std::hypot(dLon * std::cos(llhs[k][1] * 3.14159265358979 / 180.0), dLat);
-      if (l < best)
+      // A zero step (neighbours sharing a horizon point) says nothing of the footprint.
+      if (l > 0.0 && l < best)
       {
         best = l;
         step[0] = dLon;

@@ -5,7 +5,8 @@
 // text is compiled into shaders by the Rendering module and, through vtkGlobeShaderMath.h,
 // into C++ unit tests in float (GPU semantics) and in double. Rules of the subset:
 //   - no swizzles beyond .x/.y/.z/.w; literals carry an f suffix (exact binary values only);
-//   - out-parameters are written GLOBE_OUT(type); no arrays, no structs;
+//   - out-parameters are written GLOBE_OUT(type), in-out ones GLOBE_INOUT(type); no arrays,
+//     no structs;
 //   - every helper starts with globe_ and is free of side effects.
 // Lengths may be in any unit (metres, or units of a radius); each function normalises by the
 // largest radius internally so squares stay in range for 1 mm .. 1e11 m.

@@ -73,23 +73,65 @@ bool globe_sphereHit(float cosW, float sinW, float d, float r, float a, vec3 nad
   return q >= 0.0f && cosW > 0.0f;
 }
 
+// The sampled direction s and eye-relative primary-sphere point p of a grid point whose ray
+// meets the primary sphere with normal angle g (cos, sin) at ray angle omega, from the
+// primary hit (s, p): past the blend start (erratum E2: f = 0 primary only, f = 1 secondary
+// only), the direction is blended with the hit of a secondary ray whose angle runs from
+// blendStartS (erratum E4: where the secondary continues the primary) to the secondary tangent
+// tauS, and p becomes the primary-sphere point there.
+void globe_pgmSecondary(float omega, vec2 g, vec3 nadir, vec3 k, float d, float rP, float aP,
+  float tau0, float blendStart, float rS, float aS, float blendStartS, float tauS,
+  GLOBE_INOUT(vec3) s, GLOBE_INOUT(vec3) p)
+{
+  if (!(rS > 0.0f) || !(omega > blendStart))
+  {
+    return;
+  }
+  float f = clamp((omega - blendStart) / (tau0 - blendStart), 0.0f, 1.0f);
+  float omegaS = mix(blendStartS, tauS, f);
+  float tS = 0.0f;
+  vec3 sS = s;
+  vec2 gS = g;
+  globe_sphereHit(cos(omegaS), sin(omegaS), d, rS, aS, nadir, k, tS, sS, gS);
+  // Both directions lie in the (nadir, k) plane: blend their (cos g, sin g) there, so sin g
+  // keeps its relative precision (a camera 1 cm up sees normal angles of 1e-8 past the
+  // blend start, below the float noise of a unit vector's dot product).
+  vec2 m = mix(g, gS, f);
+  m = m * globe_inverseSqrt(dot(m, m));
+  // The primary-sphere point in direction s, relative to the eye, in the E1 form
+  // (a + r (1 - cos g)) nadir + r sin g k: s * rP + nadir * d would subtract two numbers
+  // of about 1 and leave float noise of 1 ulp of the radius (0.4 m on the Earth) in every
+  // vertex past the blend start. cos g is taken from sin g so the point stays on the sphere.
+  float sinG = clamp(m.y, 0.0f, 1.0f);
+  float cosG = sqrt(max(1.0f - sinG * sinG, 0.0f));
+  s = globe_normalize(nadir * (-cosG) + k * sinG);
+  p = nadir * (aP + rP * sinG * sinG / (1.0f + cosG)) + k * (rP * sinG);
+}
+
+// The plane of the ray and the nadir: its unit vector k perpendicular to the nadir, and the
+// ray's angle from the nadir as (cos, sin). A ray along the nadir has no plane of its own: any
+// perpendicular will do (Documentation/rendering.md, "Errata and degenerate cases").
+vec3 globe_pgmRayPlane(vec3 ray, vec3 nadir, vec3 anyPerpendicular, GLOBE_OUT(float) cosW,
+  GLOBE_OUT(float) sinW)
+{
+  cosW = dot(ray, nadir);
+  vec3 across = ray - nadir * cosW;
+  sinW = globe_length(across);
+  return sinW > 0.0f ? across / sinW : anyPerpendicular;
+}
+
 // One grid point: its ray (unit, scaled space) against the reference spheres. Writes the unit
 // direction from the centre of the sampled point (s) and the point on the primary sphere
 // relative to the eye (p); returns 1 for a hit, 0 for a miss.
-// Before the blend start the point is the exact ray hit, p = t ray. Past it (erratum E2:
-// f = 0 primary only, f = 1 secondary only), the direction is blended with the hit of a
-// secondary ray whose angle runs from blendStartS (erratum E4: where the secondary continues
-// the primary) to the secondary tangent tauS, and p is the primary-sphere point there.
+// Before the blend start the point is the exact ray hit, p = t ray; past it, see
+// globe_pgmSecondary.
 float globe_pgmGridPoint(vec3 ray, vec3 nadir, vec3 anyPerpendicular, float d, float rP,
   float aP, float tau0, float blendStart, float rS, float aS, float blendStartS, float tauS,
   GLOBE_OUT(vec3) s, GLOBE_OUT(vec3) p)
 {
-  float cosW = dot(ray, nadir);
-  vec3 across = ray - nadir * cosW;
-  float sinW = globe_length(across);
-  // A ray along the nadir has no plane of its own: any perpendicular will do
-  // (Documentation/rendering.md, "Errata and degenerate cases").
-  vec3 k = sinW > 0.0f ? across / sinW : anyPerpendicular;
+  float cosW = 0.0f;
+  float sinW = 0.0f;
+  vec3 k = globe_pgmRayPlane(ray, nadir, anyPerpendicular, cosW, sinW);
   float t = 0.0f;
   vec2 g = vec2(1.0f, 0.0f);
   bool hit = globe_sphereHit(cosW, sinW, d, rP, aP, nadir, k, t, s, g);
@@ -98,33 +140,43 @@ float globe_pgmGridPoint(vec3 ray, vec3 nadir, vec3 anyPerpendicular, float d, f
   {
     return 0.0f;
   }
-  if (rS > 0.0f)
-  {
-    float omega = atan(sinW, cosW);
-    if (omega > blendStart)
-    {
-      float f = clamp((omega - blendStart) / (tau0 - blendStart), 0.0f, 1.0f);
-      float omegaS = mix(blendStartS, tauS, f);
-      float tS = 0.0f;
-      vec3 sS = s;
-      vec2 gS = g;
-      globe_sphereHit(cos(omegaS), sin(omegaS), d, rS, aS, nadir, k, tS, sS, gS);
-      // Both directions lie in the (nadir, k) plane: blend their (cos g, sin g) there, so sin g
-      // keeps its relative precision (a camera 1 cm up sees normal angles of 1e-8 past the
-      // blend start, below the float noise of a unit vector's dot product).
-      vec2 m = mix(g, gS, f);
-      m = m * globe_inverseSqrt(dot(m, m));
-      // The primary-sphere point in direction s, relative to the eye, in the E1 form
-      // (a + r (1 - cos g)) nadir + r sin g k: s * rP + nadir * d would subtract two numbers
-      // of about 1 and leave float noise of 1 ulp of the radius (0.4 m on the Earth) in every
-      // vertex past the blend start. cos g is taken from sin g so the point stays on the sphere.
-      float sinG = clamp(m.y, 0.0f, 1.0f);
-      float cosG = sqrt(max(1.0f - sinG * sinG, 0.0f));
-      s = globe_normalize(nadir * (-cosG) + k * sinG);
-      p = nadir * (aP + rP * sinG * sinG / (1.0f + cosG)) + k * (rP * sinG);
-    }
-  }
+  globe_pgmSecondary(atan(sinW, cosW), g, nadir, k, d, rP, aP, tau0, blendStart, rS, aS,
+    blendStartS, tauS, s, p);
   return 1.0f;
+}
+
+// The grid point of a ray that misses the primary sphere: the point the ray at the tangent
+// angle tau0 in the same plane samples (the primary sphere's horizon there, or past the blend
+// start the secondary sphere's tangent: the farthest terrain that can be seen in that
+// direction). Triangles between hit grid points and these reach the terrain's silhouette,
+// where dropping them would leave out a band up to one grid cell wide along the limb
+// (Documentation/rendering.md "The limb"). Returns 0.5 (neither a hit nor invalid), 0 when
+// the eye is not above the primary sphere.
+// The tangent point itself, without the cancellation of globe_sphereHit at S = 0 (an ulp of
+// sin w there is a chord of 7e-4 radii): with sin T = r / d and cos T = sqrt(a (d + r)) / d,
+// the normal angle is g = (sin T, cos T) and p = d cos T (cos T nadir + sin T k), in the E1
+// form (a + r (1 - sin T)) nadir + r cos T k.
+float globe_pgmHorizonPoint(vec3 ray, vec3 nadir, vec3 anyPerpendicular, float d, float rP,
+  float aP, float tau0, float blendStart, float rS, float aS, float blendStartS, float tauS,
+  GLOBE_OUT(vec3) s, GLOBE_OUT(vec3) p)
+{
+  float cosW = 0.0f;
+  float sinW = 0.0f;
+  vec3 k = globe_pgmRayPlane(ray, nadir, anyPerpendicular, cosW, sinW);
+  if (!(aP > 0.0f) || !(d > 0.0f))
+  {
+    s = -nadir;
+    p = vec3(0.0f);
+    return 0.0f;
+  }
+  float sinT = rP / d;
+  float cosT = sqrt(aP * (d + rP)) / d;
+  vec2 g = vec2(sinT, cosT);
+  s = globe_normalize(nadir * (-sinT) + k * cosT);
+  p = nadir * (aP + rP * (1.0f - sinT)) + k * (rP * cosT);
+  globe_pgmSecondary(tau0, g, nadir, k, d, rP, aP, tau0, blendStart, rS, aS, blendStartS,
+    tauS, s, p);
+  return 0.5f;
 }
 
 // CPU-side helpers (double), used by vtkGlobeProjectiveGrid to set up the blend.

@@ -27,12 +27,14 @@ namespace
 {
 using namespace glm;
 #define GLOBE_OUT(T) T&
+#define GLOBE_INOUT(T) T&
 #define GLOBE_NEWTON_TOLERANCE 4.8e-7f /* 4 float ulp */
 #include "globe_ellipsoid.glsl"
 #include "globe_pgm.glsl"
 #include "globe_projection.glsl"
 #undef GLOBE_NEWTON_TOLERANCE
 #undef GLOBE_OUT
+#undef GLOBE_INOUT
 } // namespace
 } // namespace f
 
@@ -85,6 +87,7 @@ inline double mix(double a, double b, double t)
 using std::expm1;
 using std::log1p;
 #define GLOBE_OUT(T) T&
+#define GLOBE_INOUT(T) T&
 #define GLOBE_NEWTON_TOLERANCE 8.9e-16 /* 4 double ulp */
 #define GLOBE_EXACT_ATAN2
 #define GLOBE_EXACT_MATH
@@ -97,6 +100,7 @@ using std::log1p;
 #undef GLOBE_EXACT_ATAN2
 #undef GLOBE_NEWTON_TOLERANCE
 #undef GLOBE_OUT
+#undef GLOBE_INOUT
 } // namespace
 } // namespace d
 } // namespace vtkGlobeShaderMath

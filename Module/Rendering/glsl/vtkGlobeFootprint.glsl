@@ -50,11 +50,13 @@ vec2 globe_footprintLonLatStep(vec3 s, vec3 step)
 
 // Of two steps to the neighbours on either side, the shorter; a missing one (vec3(1e30): beyond
 // the grid or the window, or not on the body) or a NaN one loses: across a silhouette or the
-// horizon one side jumps to another surface.
+// horizon one side jumps to another surface. So does a zero step: grid points past the limb
+// share their horizon point (globe_pgmHorizonPoint), and a zero step says nothing of the
+// footprint (it would ask for level 0).
 vec3 globe_footprintShorterStep(vec3 before, vec3 after)
 {
   float a = length(before), b = length(after);
-  bool hasA = !isnan(a) && a < 1e29, hasB = !isnan(b) && b < 1e29;
+  bool hasA = !isnan(a) && a > 0.0 && a < 1e29, hasB = !isnan(b) && b > 0.0 && b < 1e29;
   if (hasA && (!hasB || a <= b))
   {
     return before;

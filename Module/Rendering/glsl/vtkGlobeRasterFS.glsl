@@ -8,7 +8,8 @@ in float globeValid;
 
 void main()
 {
-  // A triangle touching a grid point whose ray missed the body is dropped.
+  // A triangle touching an invalid grid point (no horizon: the eye not above the primary
+  // sphere) is dropped.
   if (globeValid < 0.9999)
   {
     discard;

@@ -37,5 +37,6 @@ void main()
 #else
   globeDirectionHeight = vec4(d.xyz, h);
 #endif
-  globeValid = d.w;
+  // Horizon points (0.5) are valid vertices: their triangles reach the limb.
+  globeValid = d.w > 0.25 ? 1.0 : 0.0;
 }
