@@ -101,12 +101,10 @@ void main()
   // the pixel's ray from the mesh point to the composed heights, in metres relative to the
   // mesh point (never an absolute position); the layers are then composed at the refined
   // (lon, lat), moved by the steps' small shifts in the lo parts, and its depth is written.
+  // (Only with high-precision geodetic coordinates: vtkGlobeCompositePass defines GLOBE_REFINE
+  // with them alone.)
   {
-#ifdef GLOBE_HIGH_PRECISION_GEODETIC
     vec3 chordOffset = offset;
-#else
-    vec3 chordOffset = g.xyz;
-#endif
     // The mesh point lies inside the unit sphere of directions by the chord's sag.
     float s2 = -globeChord.w - 2.0 * dot(chordOffset, globeChord.xyz) - dot(chordOffset, chordOffset);
     float shortfall = s2 / (1.0 + sqrt(max(1.0 - s2, 0.0)));
