@@ -2006,10 +2006,9 @@ bool vtkGlobeLayer::GetMapProjection(vtkGlobeMapProjection* projection)
   // Quiet: the callers name the layer in their own messages.
   const bool warnings = vtkObject::GetGlobalWarningDisplay();
   vtkObject::GlobalWarningDisplayOff();
-  const bool set = this->EPSG > 0
-    ? vtkGlobeMapProjection::IsSupportedEPSG(this->EPSG) && projection->SetFromEPSG(this->EPSG)
-    : vtkGlobeMapProjection::IsSupportedDefinition(this->CRSDefinition.c_str()) &&
-      projection->SetFromDefinition(this->CRSDefinition.c_str());
+  // (A refused CRS leaves the projection unchanged; its message is silenced above.)
+  const bool set = this->EPSG > 0 ? projection->SetFromEPSG(this->EPSG)
+                                  : projection->SetFromDefinition(this->CRSDefinition.c_str());
   vtkObject::SetGlobalWarningDisplay(warnings);
   const double a = this->DatumSemiMajorAxis, b = this->DatumSemiMinorAxis;
   if (set && a > 0.0 && b > 0.0 && b <= a)
