@@ -883,6 +883,21 @@ std::vector<Setting> Benchmark::Settings()
                         m->SetTerrainRefinement(2);
                       } });
       list.push_back({ "refinement", "none, grid 128^2", [m] { m->SetGridResolution(128); } });
+      // Candidates for a default that trades grid points for refinement steps: coarser
+      // automatic grids (the cells scale with the window), refined.
+      for (double pixels : { 3.2, 4.8, 6.4 })
+      {
+        for (int steps : { 1, 2 })
+        {
+          char name[64];
+          std::snprintf(name, sizeof(name), "%d step%s, automatic grid %.1f px per cell", steps,
+            steps > 1 ? "s" : "", pixels);
+          list.push_back({ "refinement", name, [m, pixels, steps] {
+                            m->SetGridPixelsPerCell(pixels);
+                            m->SetTerrainRefinement(steps);
+                          } });
+        }
+      }
     }
   }
   if (this->Opt.RefinementOnly)

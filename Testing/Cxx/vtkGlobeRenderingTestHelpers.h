@@ -224,6 +224,14 @@ struct Scene
     this->Renderer->SetUseFXAA(fxaa && std::string(fxaa) == "1");
     this->Window->SetSize(width, height);
     this->Window->AddRenderer(this->Renderer);
+    // VTKGLOBE_TEST_REFINEMENT=n runs the scenes with n terrain refinement steps (the default
+    // is the mapper's): what a refined default would change (Documentation/accuracy-vs-time.md
+    // "Terrain refinement"). Tests that set the refinement themselves keep theirs.
+    const char* refinement = std::getenv("VTKGLOBE_TEST_REFINEMENT");
+    if (refinement)
+    {
+      this->Mapper->SetTerrainRefinement(std::atoi(refinement));
+    }
     if (Streamed())
     {
       this->Mapper->WaitForPagesOn();
