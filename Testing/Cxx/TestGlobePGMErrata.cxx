@@ -64,6 +64,16 @@ float FloatGridPoint(vtkGlobeProjectiveGrid* grid, double omega, const double to
     static_cast<float>(grid->GetSecondaryTangentAngle()), s, p);
 }
 
+/// The grid of an eye `above` metres over ground 430 m below the datum (the Dead Sea), looking
+/// along -x, with terrain from -431 to 8,848 m.
+void LookDown(vtkGlobeProjectiveGrid* grid, double above)
+{
+  const double eye[3] = { 6378137.0 - 430.0 + above, 0.0, 0.0 };
+  const double corners[12] = { -1, -0.5, -0.5, -1, 0.5, -0.5, -1, 0.5, 0.5, -1, -0.5, 0.5 };
+  const double up[3] = { 0, 0, 1 };
+  grid->Update(eye, corners, up, -431.0, 8848.0);
+}
+
 /// Float PGM hit for a ray at angle omega from the nadir (azimuth fixed), against the
 /// long-double intersection of the float-rounded ray. Returns the height error (m) of the
 /// float hit over the sphere, or -1 for a miss (both agree) / -2 for a flag disagreement.
@@ -205,10 +215,7 @@ int TestGlobePGMErrata(int, char*[])
     grid->SetEllipsoid(wgs84);
     for (double above : { 2.0, 100.0, 1.0e4 })
     {
-      const double eye[3] = { 6378137.0 - 430.0 + above, 0.0, 0.0 };
-      const double corners[12] = { -1, -0.5, -0.5, -1, 0.5, -0.5, -1, 0.5, 0.5, -1, -0.5, 0.5 };
-      const double up[3] = { 0, 0, 1 };
-      grid->Update(eye, corners, up, -431.0, 8848.0);
+      LookDown(grid, above);
       const double* nadir = grid->GetNadir();
       const double* perp = grid->GetNadirPerpendicular();
       const double b = grid->GetBlendStart(), tau0 = grid->GetPrimaryTangentAngle();
@@ -261,10 +268,7 @@ int TestGlobePGMErrata(int, char*[])
     grid->SetEllipsoid(wgs84);
     for (double above : { 2.0, 2000.0, 4.0e5, 2.2e7, 2.0e8 })
     {
-      const double eye[3] = { 6378137.0 - 430.0 + above, 0.0, 0.0 };
-      const double corners[12] = { -1, -0.5, -0.5, -1, 0.5, -0.5, -1, 0.5, 0.5, -1, -0.5, 0.5 };
-      const double up[3] = { 0, 0, 1 };
-      grid->Update(eye, corners, up, -431.0, 8848.0);
+      LookDown(grid, above);
       const double* nadir = grid->GetNadir();
       const double* perp = grid->GetNadirPerpendicular();
       const double tau0 = grid->GetPrimaryTangentAngle();
@@ -284,12 +288,7 @@ int TestGlobePGMErrata(int, char*[])
           static_cast<float>(std::cos(omega) * nadir[1] + std::sin(omega) * perp[1]),
           static_cast<float>(std::cos(omega) * nadir[2] + std::sin(omega) * perp[2]));
         F::vec3 sv, p;
-        const float miss = F::globe_pgmGridPoint(ray, nf, pf, static_cast<float>(dd),
-          static_cast<float>(rP), static_cast<float>(grid->GetAltitude()), static_cast<float>(tau0),
-          static_cast<float>(grid->GetBlendStart()), static_cast<float>(grid->GetSecondaryRadius()),
-          static_cast<float>(dd - grid->GetSecondaryRadius()),
-          static_cast<float>(grid->GetSecondaryBlendStart()),
-          static_cast<float>(grid->GetSecondaryTangentAngle()), sv, p);
+        const float miss = FloatGridPoint(grid, omega, perp, sv, p);
         const float flag = F::globe_pgmHorizonPoint(ray, nf, pf, static_cast<float>(dd),
           static_cast<float>(rP), static_cast<float>(grid->GetAltitude()), static_cast<float>(tau0),
           static_cast<float>(grid->GetBlendStart()), static_cast<float>(grid->GetSecondaryRadius()),
