@@ -256,7 +256,7 @@ void vtkGlobeCompositePass::Render(const vtkRenderState* s)
     }
   }
   p->SetUniformMatrix4x4("globeClipToEye", clipToEye);
-  if (this->TerrainRefinement > 0)
+  if (this->Refines())
   {
     const float chord[4] = { static_cast<float>(this->Chord[0]), static_cast<float>(this->Chord[1]),
       static_cast<float>(this->Chord[2]), static_cast<float>(this->Chord[3]) };
@@ -322,6 +322,15 @@ void vtkGlobeCompositePass::SetRefinementFrame(
   std::copy(depthMap, depthMap + 3, this->DepthMap);
 }
 
+bool vtkGlobeCompositePass::Refines()
+{
+  // Refinement needs the G-buffer's precise offsets: a float unit direction carries 0.4 m of
+  // noise in the chord's sag, which a grazing ray turns into steps of hundreds of metres
+  // (depth jitter of 181 px 10 m above the ground in TestGlobeJitter). Without them the
+  // program, its key and its uniforms are those of no refinement.
+  return this->TerrainRefinement > 0 && this->Layers && this->Layers->GetHighPrecisionGeodetic();
+}
+
 int vtkGlobeCompositePass::GetRoles()
 {
   // Night lights and water masks only matter to the effects that use them, lit.
@@ -354,7 +363,7 @@ std::string vtkGlobeCompositePass::GetShaderKey()
   key += this->Atmosphere ? "A" : "";
   key += this->Graticule ? "G" : "";
   key += this->Contours ? "C" : "";
-  key += this->TerrainRefinement > 0 ? "R" + std::to_string(this->TerrainRefinement) : "";
+  key += this->Refines() ? "R" + std::to_string(this->TerrainRefinement) : "";
   return key;
 }
 
@@ -463,10 +472,7 @@ std::string vtkGlobeCompositePass::BuildFragmentShader()
   using vtkGlobeShaderSources::Replace;
   std::string defines =
     layers->GetHighPrecisionGeodetic() ? "#define GLOBE_HIGH_PRECISION_GEODETIC\n" : "";
-  // Refinement needs the G-buffer's precise offsets: a float unit direction carries 0.4 m of
-  // noise in the chord's sag, which a grazing ray turns into steps of hundreds of metres
-  // (depth jitter of 181 px 10 m above the ground in TestGlobeJitter).
-  if (this->TerrainRefinement > 0 && layers->GetHighPrecisionGeodetic())
+  if (this->Refines())
   {
     defines += "#define GLOBE_REFINE " + std::to_string(this->TerrainRefinement) + "\n";
   }

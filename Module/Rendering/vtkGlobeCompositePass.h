@@ -153,6 +153,10 @@ public:
    */
   void SetRefinementFrame(const double chord[4], const double clipW[4], const double depthMap[3]);
 
+  /// Whether the program refines: TerrainRefinement > 0 with high-precision geodetic
+  /// coordinates (Documentation/rendering.md "Terrain refinement").
+  bool Refines();
+
   /// The description the program is generated from (layers and effects).
   std::string GetShaderKey();
 

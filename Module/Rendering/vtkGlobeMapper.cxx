@@ -1134,7 +1134,7 @@ bool vtkGlobeMapper::RenderGBuffer(vtkRenderer* ren, vtkActor* act, int width, i
     // holds o = (p - A nadir) / rp in float (the raster shader's floats A, nadir, rp), so the
     // mesh point's direction is u = ref + o - delta with ref = -nadir (float) and delta what
     // the floats miss of the exact eye; 1 - |u|^2 = -C - 2 o.(ref - delta) - o.o.
-    double chord[4] = { 0.0, 0.0, 0.0, -1.0 }; // without offsets: 1 - |o|^2
+    double chord[4] = { 0.0, 0.0, 0.0, -1.0 }; // not read: no refinement without offsets
     if (highPrecision)
     {
       const double* nadir = in.Grid->GetNadir();

@@ -403,15 +403,6 @@ bool vtkGlobeProjectiveGrid::ComputeGridPoint(
     this->Distance, this->PrimaryRadius, this->Altitude, this->PrimaryTangentAngle,
     this->BlendStart, this->SecondaryRadius, this->Distance - this->SecondaryRadius,
     this->SecondaryBlendStart, this->SecondaryTangentAngle, s, p);
-  if (hit == 0.0)
-  {
-    D::globe_pgmHorizonPoint(D::vec3(r[0], r[1], r[2]),
-      D::vec3(this->Nadir[0], this->Nadir[1], this->Nadir[2]),
-      D::vec3(this->NadirPerpendicular[0], this->NadirPerpendicular[1], this->NadirPerpendicular[2]),
-      this->Distance, this->PrimaryRadius, this->Altitude, this->PrimaryTangentAngle,
-      this->BlendStart, this->SecondaryRadius, this->Distance - this->SecondaryRadius,
-      this->SecondaryBlendStart, this->SecondaryTangentAngle, s, p);
-  }
   direction[0] = s.x, direction[1] = s.y, direction[2] = s.z;
   eyeRelative[0] = p.x, eyeRelative[1] = p.y, eyeRelative[2] = p.z;
   return hit > 0.5;

@@ -118,7 +118,7 @@ public:
    * direction from the body's centre (scaled space) of its reference point and the
    * reference point relative to the eye (scaled space, on the primary sphere). Returns false
    * for a miss, whose point is then the horizon point the grid shader gives it
-   * (globe_pgmHorizonPoint: its triangles reach the limb).
+   * (globe_pgmGridPoint: its triangles reach the limb).
    */
   bool ComputeGridPoint(double u, double v, double direction[3], double eyeRelative[3]);
 

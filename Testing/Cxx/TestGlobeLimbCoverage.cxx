@@ -3,7 +3,7 @@
 // towards the horizon, at grids from 24^2 (cells of about 12 px) to the automatic one. Every
 // pixel whose four corner rays all hit the ellipsoid (by an exact ray-ellipsoid intersection
 // in double) must be covered, and every pixel whose four corner rays all miss must not be.
-// Before grid points past the limb took their horizon point (globe_pgmHorizonPoint), the
+// Before grid points past the limb took their horizon point (globe_pgmGridPoint), the
 // triangles touching them were dropped, and a band up to one grid cell wide along the limb
 // showed the background (at 24^2 from space: hundreds of pixels).
 #include "vtkGlobeRenderingTestHelpers.h"

@@ -108,61 +108,40 @@ void globe_pgmSecondary(float omega, vec2 g, vec3 nadir, vec3 k, float d, float 
   p = nadir * (aP + rP * sinG * sinG / (1.0f + cosG)) + k * (rP * sinG);
 }
 
-// The plane of the ray and the nadir: its unit vector k perpendicular to the nadir, and the
-// ray's angle from the nadir as (cos, sin). A ray along the nadir has no plane of its own: any
-// perpendicular will do (Documentation/rendering.md, "Errata and degenerate cases").
-vec3 globe_pgmRayPlane(vec3 ray, vec3 nadir, vec3 anyPerpendicular, GLOBE_OUT(float) cosW,
-  GLOBE_OUT(float) sinW)
-{
-  cosW = dot(ray, nadir);
-  vec3 across = ray - nadir * cosW;
-  sinW = globe_length(across);
-  return sinW > 0.0f ? across / sinW : anyPerpendicular;
-}
-
 // One grid point: its ray (unit, scaled space) against the reference spheres. Writes the unit
 // direction from the centre of the sampled point (s) and the point on the primary sphere
-// relative to the eye (p); returns 1 for a hit, 0 for a miss.
-// Before the blend start the point is the exact ray hit, p = t ray; past it, see
-// globe_pgmSecondary.
+// relative to the eye (p). Returns 1 for a hit: before the blend start the point is the exact
+// ray hit, p = t ray; past it, see globe_pgmSecondary.
+// A ray that misses the primary sphere returns 0.5 (a valid vertex, not a hit) with the point
+// the ray at the tangent angle tau0 in the same plane samples: the primary sphere's horizon
+// there, or past the blend start the secondary sphere's tangent (the farthest terrain that can
+// be seen in that direction). Triangles between hit grid points and these reach the terrain's
+// silhouette, where dropping them would leave out a band up to one grid cell wide along the
+// limb (Documentation/rendering.md "The limb"). The tangent point is written directly, without
+// the cancellation of globe_sphereHit at S = 0 (an ulp of sin w there is a chord of 7e-4
+// radii): with sin T = r / d and cos T = sqrt(a (d + r)) / d, the normal angle is
+// g = (sin T, cos T) and p = d cos T (cos T nadir + sin T k), in the E1 form
+// (a + r (1 - sin T)) nadir + r cos T k. Returns 0 (invalid) only when the eye is not above
+// the primary sphere.
 float globe_pgmGridPoint(vec3 ray, vec3 nadir, vec3 anyPerpendicular, float d, float rP,
   float aP, float tau0, float blendStart, float rS, float aS, float blendStartS, float tauS,
   GLOBE_OUT(vec3) s, GLOBE_OUT(vec3) p)
 {
-  float cosW = 0.0f;
-  float sinW = 0.0f;
-  vec3 k = globe_pgmRayPlane(ray, nadir, anyPerpendicular, cosW, sinW);
+  float cosW = dot(ray, nadir);
+  vec3 across = ray - nadir * cosW;
+  float sinW = globe_length(across);
+  // A ray along the nadir has no plane of its own: any perpendicular will do
+  // (Documentation/rendering.md, "Errata and degenerate cases").
+  vec3 k = sinW > 0.0f ? across / sinW : anyPerpendicular;
   float t = 0.0f;
   vec2 g = vec2(1.0f, 0.0f);
-  bool hit = globe_sphereHit(cosW, sinW, d, rP, aP, nadir, k, t, s, g);
-  p = ray * t;
-  if (!hit)
+  if (globe_sphereHit(cosW, sinW, d, rP, aP, nadir, k, t, s, g))
   {
-    return 0.0f;
+    p = ray * t;
+    globe_pgmSecondary(atan(sinW, cosW), g, nadir, k, d, rP, aP, tau0, blendStart, rS, aS,
+      blendStartS, tauS, s, p);
+    return 1.0f;
   }
-  globe_pgmSecondary(atan(sinW, cosW), g, nadir, k, d, rP, aP, tau0, blendStart, rS, aS,
-    blendStartS, tauS, s, p);
-  return 1.0f;
-}
-
-// The grid point of a ray that misses the primary sphere: the point the ray at the tangent
-// angle tau0 in the same plane samples (the primary sphere's horizon there, or past the blend
-// start the secondary sphere's tangent: the farthest terrain that can be seen in that
-// direction). Triangles between hit grid points and these reach the terrain's silhouette,
-// where dropping them would leave out a band up to one grid cell wide along the limb
-// (Documentation/rendering.md "The limb"). Returns 0.5 (neither a hit nor invalid), 0 when
-// the eye is not above the primary sphere.
-// The tangent point itself, without the cancellation of globe_sphereHit at S = 0 (an ulp of
-// sin w there is a chord of 7e-4 radii): with sin T = r / d and cos T = sqrt(a (d + r)) / d,
-// the normal angle is g = (sin T, cos T) and p = d cos T (cos T nadir + sin T k), in the E1
-// form (a + r (1 - sin T)) nadir + r cos T k.
-float globe_pgmHorizonPoint(vec3 ray, vec3 nadir, vec3 anyPerpendicular, float d, float rP,
-  float aP, float tau0, float blendStart, float rS, float aS, float blendStartS, float tauS,
-  GLOBE_OUT(vec3) s, GLOBE_OUT(vec3) p)
-{
-  float cosW = 0.0f;
-  float sinW = 0.0f;
-  vec3 k = globe_pgmRayPlane(ray, nadir, anyPerpendicular, cosW, sinW);
   if (!(aP > 0.0f) || !(d > 0.0f))
   {
     s = -nadir;
@@ -171,7 +150,7 @@ float globe_pgmHorizonPoint(vec3 ray, vec3 nadir, vec3 anyPerpendicular, float d
   }
   float sinT = rP / d;
   float cosT = sqrt(aP * (d + rP)) / d;
-  vec2 g = vec2(sinT, cosT);
+  g = vec2(sinT, cosT);
   s = globe_normalize(nadir * (-sinT) + k * cosT);
   p = nadir * (aP + rP * (1.0f - sinT)) + k * (rP * cosT);
   globe_pgmSecondary(tau0, g, nadir, k, d, rP, aP, tau0, blendStart, rS, aS, blendStartS,

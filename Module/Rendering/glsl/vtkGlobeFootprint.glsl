@@ -51,7 +51,7 @@ vec2 globe_footprintLonLatStep(vec3 s, vec3 step)
 // Of two steps to the neighbours on either side, the shorter; a missing one (vec3(1e30): beyond
 // the grid or the window, or not on the body) or a NaN one loses: across a silhouette or the
 // horizon one side jumps to another surface. So does a zero step: grid points past the limb
-// share their horizon point (globe_pgmHorizonPoint), and a zero step says nothing of the
+// share their horizon point (globe_pgmGridPoint), and a zero step says nothing of the
 // footprint (it would ask for level 0).
 vec3 globe_footprintShorterStep(vec3 before, vec3 after)
 {

@@ -2,7 +2,7 @@
 //VTK::Output::Dec
 // Grid pass, step 1 (PGM): one fragment per grid point. Casts the grid point's ray from the
 // sampling camera against the reference spheres (globe_pgmGridPoint; a ray that misses them
-// takes the horizon point in its plane, globe_pgmHorizonPoint) and writes
+// takes the horizon point in its plane) and writes
 //   out 0: the unit direction from the centre of the sampled point (scaled space), flag (1 hit,
 //          0.5 horizon point, 0 invalid)
 //   out 1: that point on the primary sphere, relative to the eye (scaled space)
@@ -39,12 +39,6 @@ void main()
   float hit = globe_pgmGridPoint(ray, globeNadir, globeNadirPerpendicular, globeDistance,
     globePrimaryRadius, globePrimaryAltitude, globeTau0, globeBlendStart, globeSecondaryRadius,
     globeSecondaryAltitude, globeBlendStartS, globeTauS, s, p);
-  if (hit == 0.0)
-  {
-    hit = globe_pgmHorizonPoint(ray, globeNadir, globeNadirPerpendicular, globeDistance,
-      globePrimaryRadius, globePrimaryAltitude, globeTau0, globeBlendStart, globeSecondaryRadius,
-      globeSecondaryAltitude, globeBlendStartS, globeTauS, s, p);
-  }
   gl_FragData[0] = vec4(s, hit);
   gl_FragData[1] = vec4(p, 0.0);
 }
