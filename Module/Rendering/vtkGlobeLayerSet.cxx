@@ -1336,7 +1336,7 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
       const std::string p = Prefix(role, i);
       if (list[i]->Streamed)
       {
-        s << "uniform sampler2D " << p << "Table;\n"
+        s << "uniform usampler2D " << p << "Table;\n"
           << "uniform vec4 " << p << "Pyramid;\n";
         if (hp || !list[i]->Function.empty())
         {

@@ -14,6 +14,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <condition_variable>
 #include <cstring>
@@ -623,6 +624,16 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
     }
     s.TableWidth = s.Columns[0];
     s.TableHeight = s.FirstRow[s.Levels];
+    if (s.Columns[0] > 65535 || s.Rows[0] > 65535)
+    {
+      // A table entry packs a page's column and row in 16 bits each.
+      vtkErrorMacro(<< "Layer '" << layer->GetName() << "' has " << s.Columns[0] << " x "
+                    << s.Rows[0] << " pages of " << this->PageSize
+                    << " texels at level 0, more than 65535 along an axis; raise PageSize. "
+                       "The layer is skipped");
+      in.Refuse(layer);
+      continue;
+    }
     vtkSmartPointer<vtkDataArray> coarsest;
     if (s.Kind == Heights)
     {
@@ -718,7 +729,12 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
     {
       continue;
     }
-    std::vector<float> table(static_cast<size_t>(s.TableWidth) * s.TableHeight * 4, -1.0f);
+    // Each entry first resolves its own page: (slot, level, column, row) of the page when
+    // resident, else of its finest resident ancestor.
+    std::vector<std::array<unsigned, 2>> found(static_cast<size_t>(s.TableWidth) * s.TableHeight);
+    auto at = [&s](int l, int c, int r) {
+      return static_cast<size_t>(s.FirstRow[l] + r) * s.TableWidth + c;
+    };
     // Coarse to fine: a page that is not resident takes the entry of the page one level up
     // that holds its centre. A level's rows and columns beyond its pages repeat its last
     // ones, so the shader clamps to the region, not to the level's own page counts.
@@ -728,22 +744,17 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
       {
         for (int c = 0; c < s.TableWidth; ++c)
         {
-          float* t = &table[4 * (static_cast<size_t>(s.FirstRow[l] + r) * s.TableWidth + c)];
+          std::array<unsigned, 2>& t = found[at(l, c, r)];
           if (r >= s.Rows[l] || c >= s.Columns[l])
           {
-            const float* edge = &table[4 *
-              (static_cast<size_t>(s.FirstRow[l] + std::min(r, s.Rows[l] - 1)) * s.TableWidth +
-                std::min(c, s.Columns[l] - 1))];
-            std::copy(edge, edge + 4, t);
+            t = found[at(l, std::min(c, s.Columns[l] - 1), std::min(r, s.Rows[l] - 1))];
             continue;
           }
           auto it = s.Resident.find(MakeKey(l, c, r));
           if (it != s.Resident.end())
           {
-            t[0] = static_cast<float>(it->second);
-            t[1] = static_cast<float>(l);
-            t[2] = static_cast<float>(c);
-            t[3] = static_cast<float>(r);
+            t = { static_cast<unsigned>(it->second) << 6 | static_cast<unsigned>(l),
+              static_cast<unsigned>(c) | static_cast<unsigned>(r) << 16 };
             continue;
           }
           if (l + 1 >= s.Levels)
@@ -754,9 +765,27 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
           const double v = std::min((r + 0.5) * P / s.Height[l], 1.0 - 1e-9);
           const int pc = std::min(static_cast<int>(u * s.Width[l + 1] / P), s.Columns[l + 1] - 1);
           const int pr = std::min(static_cast<int>(v * s.Height[l + 1] / P), s.Rows[l + 1] - 1);
-          const float* up =
-            &table[4 * (static_cast<size_t>(s.FirstRow[l + 1] + pr) * s.TableWidth + pc)];
-          std::copy(up, up + 4, t);
+          t = found[at(l + 1, pc, pr)];
+        }
+      }
+    }
+    // Then the texel carries its page and the page the same lookup finds one level up (the
+    // region's cell of its halved column and row: what the shader's lookup at level + 1
+    // reads), so trilinear filtering needs one table read, not two.
+    std::vector<unsigned> table(4 * found.size());
+    for (int l = 0; l < s.Levels; ++l)
+    {
+      const int up = std::min(l + 1, s.Levels - 1);
+      for (int r = 0; r < s.FirstRow[l + 1] - s.FirstRow[l]; ++r)
+      {
+        for (int c = 0; c < s.TableWidth; ++c)
+        {
+          const size_t i = at(l, c, r);
+          const auto& parent = up == l ? found[i]
+                                       : found[at(up, c / 2,
+                                           std::min(r / 2, s.FirstRow[up + 1] - s.FirstRow[up] - 1))];
+          std::copy(found[i].begin(), found[i].end(), &table[4 * i]);
+          std::copy(parent.begin(), parent.end(), &table[4 * i + 2]);
         }
       }
     }
@@ -769,7 +798,10 @@ void vtkGlobePageCache::BeginFrame(vtkOpenGLRenderWindow* window, bool wait)
     s.Table->SetMagnificationFilter(vtkTextureObject::Nearest);
     s.Table->SetWrapS(vtkTextureObject::ClampToEdge);
     s.Table->SetWrapT(vtkTextureObject::ClampToEdge);
-    s.Table->Create2DFromRaw(s.TableWidth, s.TableHeight, 4, VTK_FLOAT, table.data());
+    s.Table->SetInternalFormat(GL_RGBA32UI);
+    s.Table->SetFormat(GL_RGBA_INTEGER);
+    s.Table->SetDataType(GL_UNSIGNED_INT);
+    s.Table->Create2DFromRaw(s.TableWidth, s.TableHeight, 4, VTK_UNSIGNED_INT, table.data());
     s.TableDirty = false;
   }
 }
