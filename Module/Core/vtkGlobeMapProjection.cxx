@@ -182,6 +182,128 @@ Conic MakeConic(vtkGlobeMapProjection* p)
     p->GetCentralMeridian(), p->GetFalseEasting(), p->GetFalseNorthing());
 }
 
+// Lambert azimuthal equal-area in an oblique or equatorial aspect on the ellipsoid (Snyder,
+// USGS PP 1395, eqs. 3-12, 24-19 to 24-21 and 24-25 to 24-30): the spherical azimuthal
+// projection of the authalic sphere (radius Rq, authalic latitude beta, sin beta = q / q_p),
+// stretched by D along x and 1 / D along y so that the centre keeps scale 1 on its meridian and
+// parallel. GeographicLib has the polar aspect only (AlbersEqualArea).
+class ObliqueAzimuthal
+{
+public:
+  ObliqueAzimuthal(double a, double f, double lat0, double lon0, double fe, double fn)
+    : E2(f * (2.0 - f))
+    , E(std::sqrt(f * (2.0 - f)))
+    , Lat0(lat0)
+    , Lon0(lon0)
+    , FE(fe)
+    , FN(fn)
+  {
+    this->Qp = this->Q(1.0);
+    this->Rq = a * std::sqrt(0.5 * this->Qp);
+    const double s0 = std::sin(lat0 * Deg);
+    this->SinB1 = this->Q(s0) / this->Qp;
+    this->CosB1 = this->CosBeta(lat0);
+    this->D = a * std::cos(lat0 * Deg) / std::sqrt(1.0 - this->E2 * s0 * s0) / (this->Rq * this->CosB1);
+  }
+  // The authalic function q of sin(lat) (Snyder 3-12).
+  double Q(double s) const
+  {
+    return (1.0 - this->E2) *
+      (s / (1.0 - this->E2 * s * s) + (this->E > 0.0 ? std::atanh(this->E * s) / this->E : s));
+  }
+  // 1 + cos of the angle from the centre on the authalic sphere: the oblique aspects' valid
+  // domain leaves out a cap of 5 degrees around the antipode, which maps to the image's rim
+  // (radial scale cos(c / 2) -> 0: the inverse loses its accuracy there).
+  double OnePlusCosFromCentre(double lat, double lon) const
+  {
+    return 1.0 + this->SinB1 * this->SinBeta(lat) +
+      this->CosB1 * this->CosBeta(lat) * std::cos((lon - this->Lon0) * Deg);
+  }
+  static constexpr double AntipodeCap = 0.0038053019082548; // 1 - cos(5 degrees)
+  double SinBeta(double lat) const { return this->Q(std::sin(lat * Deg)) / this->Qp; }
+  // cos(beta), relatively accurate up to the poles: from 1 - |sin beta| = (q_p - |q|) / q_p,
+  // written in 1 - |sin lat| = cos^2 / (1 + |sin lat|) (q_p - q as a product, as the GPU does).
+  double CosBeta(double lat) const
+  {
+    const double s = std::abs(std::sin(lat * Deg)), c = std::cos(lat * Deg);
+    const double u = c * c / (1.0 + s);
+    const double w = 1.0 - this->E2 * s;
+    const double first = u * (1.0 + this->E2 * s) / ((1.0 - this->E2) * (1.0 - this->E2 * s * s));
+    const double second = this->E > 0.0 ? std::atanh(this->E * u / w) / this->E : u;
+    const double t = (1.0 - this->E2) * (first + second) / this->Qp;
+    return std::sqrt(std::max(0.0, t * (2.0 - t)));
+  }
+  // False at the antipode of the centre, which has no image.
+  bool Forward(double lat, double lon, double& x, double& y) const
+  {
+    const double sb = this->SinBeta(lat), cb = this->CosBeta(lat);
+    const double dl = (lon - this->Lon0) * Deg;
+    const double vz = this->SinB1 * sb + this->CosB1 * cb * std::cos(dl);
+    if (!(1.0 + vz > 1e-15))
+    {
+      return false;
+    }
+    const double k = std::sqrt(2.0 / (1.0 + vz));
+    x = this->FE + this->Rq * this->D * k * cb * std::sin(dl);
+    y = this->FN + this->Rq / this->D * k * (this->CosB1 * sb - this->SinB1 * cb * std::cos(dl));
+    return true;
+  }
+  // False outside the image (the disc of radius 2 Rq on the authalic sphere's azimuthal plane).
+  bool Reverse(double x, double y, double& lat, double& lon) const
+  {
+    const double X = (x - this->FE) / (this->Rq * this->D), Y = (y - this->FN) * this->D / this->Rq;
+    const double rho = std::hypot(X, Y);
+    if (!(rho <= 2.0))
+    {
+      return false;
+    }
+    if (rho == 0.0)
+    {
+      lat = this->Lat0;
+      lon = this->Lon0;
+      return true;
+    }
+    const double c = 2.0 * std::asin(0.5 * rho), sc = std::sin(c), cc = std::cos(c);
+    const double sb = std::max(-1.0, std::min(1.0, cc * this->SinB1 + Y * sc * this->CosB1 / rho));
+    lon = this->Lon0 + std::atan2(X * sc, rho * this->CosB1 * cc - Y * this->SinB1 * sc) / Deg;
+    lat = this->Latitude(sb * this->Qp);
+    return true;
+  }
+  // The latitude whose authalic function is q: Newton's method on q (Snyder 3-16), from the
+  // sphere's value.
+  double Latitude(double q) const
+  {
+    if (std::abs(q) >= this->Qp)
+    {
+      return q > 0.0 ? 90.0 : -90.0;
+    }
+    double phi = std::asin(std::max(-1.0, std::min(1.0, 0.5 * q)));
+    for (int i = 0; i < 20; ++i)
+    {
+      const double s = std::sin(phi), c = std::cos(phi);
+      if (!(c > 1e-12))
+      {
+        break;
+      }
+      const double w = 1.0 - this->E2 * s * s;
+      const double step = w * w / (2.0 * c) * (q - this->Q(s)) / (1.0 - this->E2);
+      phi += step;
+      if (std::abs(step) < 1e-15)
+      {
+        break;
+      }
+    }
+    return std::max(-90.0, std::min(90.0, phi / Deg));
+  }
+  double E2, E, Lat0, Lon0, FE, FN, Qp = 0.0, Rq = 0.0, SinB1 = 0.0, CosB1 = 1.0, D = 1.0;
+};
+
+ObliqueAzimuthal MakeObliqueAzimuthal(vtkGlobeMapProjection* p)
+{
+  return ObliqueAzimuthal(p->GetSemiMajorAxis(), p->GetFlattening(), p->GetLatitudeOfOrigin(),
+    p->GetCentralMeridian(), p->GetFalseEasting(), p->GetFalseNorthing());
+}
+
 // What SetFromPROJ found for one CRS (cached: PROJ's database is read once per CRS).
 struct PROJDefinition
 {
@@ -370,13 +492,9 @@ bool ReadPROJDefinition(const std::string& name, PROJDefinition& d)
       d.StandardParallel = get({ 8823 }, NaN);
       d.StandardParallel2 = get({ 8824 }, NaN);
       break;
-    case 9820: // Lambert azimuthal equal area: polar aspects only
+    case 9820: // Lambert azimuthal equal area: any aspect
     {
       const double lat0 = Pole(get({ 8801 }, NaN));
-      if (std::abs(lat0) != 90.0)
-      {
-        return false;
-      }
       d.Kind = vtkGlobeMapProjection::LambertAzimuthalEqualArea;
       d.LatitudeOfOrigin = d.StandardParallel = d.StandardParallel2 = lat0;
       break;
@@ -580,8 +698,8 @@ void vtkGlobeMapProjection::SetToAlbersEqualArea(double standardParallel1,
 void vtkGlobeMapProjection::SetToLambertAzimuthalEqualArea(
   double latitudeOfOrigin, double centralMeridian, double falseEasting, double falseNorthing)
 {
-  const double pole = latitudeOfOrigin >= 0.0 ? 90.0 : -90.0;
-  this->SetParameters(LambertAzimuthalEqualArea, centralMeridian, pole, 90.0, 1.0, pole,
+  const double lat0 = Pole(latitudeOfOrigin);
+  this->SetParameters(LambertAzimuthalEqualArea, centralMeridian, lat0, 90.0, 1.0, lat0,
     falseEasting, falseNorthing);
 }
 
@@ -613,7 +731,7 @@ double vtkGlobeMapProjection::GetApexHemisphere()
     case AlbersEqualArea:
       return this->StandardParallel + this->StandardParallel2 >= 0.0 ? 1.0 : -1.0;
     case LambertAzimuthalEqualArea:
-      return this->LatitudeOfOrigin >= 0.0 ? 1.0 : -1.0;
+      return this->LatitudeOfOrigin <= -90.0 ? -1.0 : 1.0;
     default:
       return 1.0;
   }
@@ -622,7 +740,12 @@ double vtkGlobeMapProjection::GetApexHemisphere()
 bool vtkGlobeMapProjection::IsConic()
 {
   return this->Kind == LambertConformalConic || this->Kind == AlbersEqualArea ||
-    this->Kind == LambertAzimuthalEqualArea;
+    (this->Kind == LambertAzimuthalEqualArea && std::abs(this->LatitudeOfOrigin) == 90.0);
+}
+
+bool vtkGlobeMapProjection::HasMapCut()
+{
+  return this->Kind == Sinusoidal || this->IsConic();
 }
 
 //------------------------------------------------------------------------------
@@ -634,7 +757,7 @@ bool vtkGlobeMapProjection::SetFromEPSG(int code)
                   << " is not a supported projection (supported: 4326, 4087, 32662, 3413, 3031, "
                      "3995, 3976, 3032, 32661, 32761, 3395, 3857, 326zz and 327zz, and codes "
                      "whose definition in PROJ's database is transverse Mercator, polar "
-                     "stereographic, Mercator, Lambert conformal conic, Albers, polar Lambert "
+                     "stereographic, Mercator, Lambert conformal conic, Albers, Lambert "
                      "azimuthal equal-area or Lambert cylindrical equal-area in metres on a "
                      "datum PROJ does not shift against WGS 84); the projection is unchanged.");
     return false;
@@ -930,6 +1053,14 @@ bool vtkGlobeMapProjection::ForwardUnchecked(double lon, double lat, double xy[2
       case LambertConformalConic:
       case AlbersEqualArea:
       case LambertAzimuthalEqualArea:
+        if (!this->IsConic())
+        {
+          if (!MakeObliqueAzimuthal(this).Forward(lat, lon, x, y))
+          {
+            return false;
+          }
+          break;
+        }
         MakeConic(this).Forward(lat, lon, x, y);
         break;
       case Sinusoidal:
@@ -1058,7 +1189,8 @@ bool vtkGlobeMapProjection::InverseUnchecked(double x, double y, double lonLat[2
       case LambertConformalConic:
       case AlbersEqualArea:
       case LambertAzimuthalEqualArea:
-        if (!MakeConic(this).Reverse(x, y, lat, lon))
+        if (!(this->IsConic() ? MakeConic(this).Reverse(x, y, lat, lon)
+                              : MakeObliqueAzimuthal(this).Reverse(x, y, lat, lon)))
         {
           return false;
         }
@@ -1150,6 +1282,10 @@ void vtkGlobeMapProjection::GetValidDomain(double box[4])
     case LambertConformalConic:
     case AlbersEqualArea:
     case LambertAzimuthalEqualArea:
+      if (!this->IsConic())
+      {
+        break; // the oblique aspects: the whole globe but a cap around the centre's antipode
+      }
       // Short of the pole opposite the apex (infinitely far on the conformal conic, a
       // circle on the azimuthal projection).
       if (this->GetApexHemisphere() > 0.0)
@@ -1176,6 +1312,11 @@ bool vtkGlobeMapProjection::IsInValidDomain(double lon, double lat)
   this->GetValidDomain(box);
   const double centre = 0.5 * (box[0] + box[1]);
   const double halfWidth = 0.5 * (box[1] - box[0]);
+  if (this->Kind == LambertAzimuthalEqualArea && !this->IsConic() &&
+    !(MakeObliqueAzimuthal(this).OnePlusCosFromCentre(lat, lon) > ObliqueAzimuthal::AntipodeCap))
+  {
+    return false;
+  }
   return std::abs(std::remainder(lon - centre, 360.0)) <= halfWidth && lat >= box[2] &&
     lat <= box[3];
 }
@@ -1198,8 +1339,10 @@ const char* vtkGlobeMapProjection::GetShaderFunctionName()
     case LambertConformalConic:
       return "globe_projectConformalConic";
     case AlbersEqualArea:
-    case LambertAzimuthalEqualArea:
       return "globe_projectAlbersEqualArea";
+    case LambertAzimuthalEqualArea:
+      return this->IsConic() ? "globe_projectAlbersEqualArea"
+                             : "globe_projectObliqueAzimuthalEqualArea";
     case CylindricalEqualArea:
       return "globe_projectCylindricalEqualArea";
     case Sinusoidal:
@@ -1337,6 +1480,24 @@ bool vtkGlobeMapProjection::ComputeShaderParametersAt(const double origin[2],
     case AlbersEqualArea:
     case LambertAzimuthalEqualArea:
     {
+      if (this->Kind == LambertAzimuthalEqualArea && !this->IsConic())
+      {
+        // The authalic sphere's unit azimuthal offsets (X, Y), then x = Rq D X, y = Rq Y / D.
+        const ObliqueAzimuthal o = MakeObliqueAzimuthal(this);
+        m[0] = o.Rq * o.D / mapWidth;
+        m[3] = -o.Rq / (o.D * mapHeight);
+        const double sb = o.SinBeta(latR / Deg);
+        const double L = std::remainder(lonR - this->CentralMeridian * Deg, 2.0 * Pi);
+        P[20] = sb;
+        P[21] = o.CosBeta(latR / Deg);
+        P[22] = o.SinB1;
+        P[23] = o.CosB1;
+        P[24] = L;
+        P[25] = (1.0 - e * e) / o.Qp;
+        P[26] = std::sin(L);
+        P[27] = std::cos(L);
+        break;
+      }
       // F_r: the reference's offset from the apex in the north-apex frame (y mirrored south).
       const double fx = xr - apex[0], fy = hemi * (yr - apex[1]);
       m[0] = fx / mapWidth;

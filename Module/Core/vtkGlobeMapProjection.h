@@ -20,9 +20,13 @@
  *   (GeographicLib::LambertConformalConic); e.g. EPSG:2154, 3034.
  * - AlbersEqualArea: two standard parallels, latitude of the false origin, central meridian,
  *   false easting/northing (GeographicLib::AlbersEqualArea); e.g. EPSG:5070, 3577.
- * - LambertAzimuthalEqualArea: polar aspects only (latitude of origin +-90), e.g. EASE-Grid 2.0
- *   North and South (EPSG:6931, 6932) (GeographicLib::AlbersEqualArea with a standard parallel
- *   at the pole).
+ * - LambertAzimuthalEqualArea: latitude and longitude of origin, false easting/northing.
+ *   Polar aspects (latitude of origin +-90), e.g. EASE-Grid 2.0 North and South (EPSG:6931,
+ *   6932), through GeographicLib::AlbersEqualArea with a standard parallel at the pole; the
+ *   oblique and equatorial aspects, e.g. LAEA Europe (EPSG:3035), through Snyder's ellipsoidal
+ *   formulas on the authalic sphere (USGS PP 1395, 24-19 to 24-30; the inverse latitude by
+ *   Newton's method on q). The valid domain leaves out 5 degrees around the centre's
+ *   antipode (the image's rim, where the inverse is ill-conditioned).
  * - CylindricalEqualArea: standard parallel, central meridian, false easting/northing; e.g.
  *   EASE-Grid 2.0 Global (EPSG:6933) (GeographicLib::AlbersEqualArea with standard parallels
  *   +-phi1).
@@ -41,7 +45,7 @@
  * 3857 (900913, 3785), 326zz and 327zz (UTM zones 1-60), all on WGS84, from a table; and any
  * other code whose definition in PROJ's database uses one of the methods above (transverse
  * Mercator, polar stereographic A/B, Mercator A/B, Lambert conformal conic 1SP/2SP, Albers,
- * polar Lambert azimuthal equal-area, Lambert cylindrical equal-area) in metres, provided
+ * Lambert azimuthal equal-area, Lambert cylindrical equal-area) in metres, provided
  * that the projection then agrees with PROJ's own transformation from EPSG:4326 within 1 mm
  * at points of the CRS's area of use: a CRS on a datum that PROJ shifts against WGS 84 (e.g.
  * OSGB 36, EPSG:27700) is not drawn this way (layers reproject it on load instead).
@@ -157,7 +161,7 @@ public:
   void SetToAlbersEqualArea(double standardParallel1, double standardParallel2,
     double latitudeOfOrigin, double centralMeridian, double falseEasting = 0.0,
     double falseNorthing = 0.0);
-  /// Polar aspects: north when latitudeOfOrigin > 0 (it is taken as +-90).
+  /// Any aspect: polar when latitudeOfOrigin is +-90, else oblique (equatorial at 0).
   void SetToLambertAzimuthalEqualArea(double latitudeOfOrigin, double centralMeridian,
     double falseEasting = 0.0, double falseNorthing = 0.0);
   void SetToCylindricalEqualArea(double standardParallel, double centralMeridian,
@@ -186,7 +190,7 @@ public:
   vtkSetMacro(ScaleFactor, double);
   vtkGetMacro(ScaleFactor, double);
   /// Transverse Mercator and the conics: the latitude where y = FalseNorthing on the central
-  /// meridian; Lambert azimuthal equal-area: the pole (+-90).
+  /// meridian; Lambert azimuthal equal-area: the centre's latitude (+-90: a polar aspect).
   vtkSetMacro(LatitudeOfOrigin, double);
   vtkGetMacro(LatitudeOfOrigin, double);
   vtkSetMacro(FalseEasting, double);
@@ -227,8 +231,10 @@ public:
    * +-89.5 (Mercator), +-85.0511 (Web Mercator), its hemisphere (polar stereographic),
    * 10 degrees either side of the central meridian between 89 S and 89 N (transverse
    * Mercator; UTM: 80 S to 84 N), all longitudes and latitudes short of 0.5 degrees of the
-   * pole opposite the apex (the conics and Lambert azimuthal equal-area), the whole globe
-   * (cylindrical equal-area, sinusoidal). The GPU functions return (-1, -1) outside it.
+   * pole opposite the apex (the conics and polar Lambert azimuthal equal-area), the whole
+   * globe (cylindrical equal-area, sinusoidal; oblique Lambert azimuthal equal-area less a
+   * cap of 5 degrees around its centre's antipode, which IsInValidDomain checks beyond this
+   * box). The GPU functions return (-1, -1) outside it.
    */
   void GetValidDomain(double box[4]);
   /// Whether (lon, lat) in degrees lies in GetValidDomain's region.
@@ -259,10 +265,18 @@ public:
    * The globe_projection.glsl function that takes these parameters:
    * globe_projectEquirectangular (Geographic too), globe_projectMercator (Web Mercator too),
    * globe_projectPolarStereographic, globe_projectTransverseMercator,
-   * globe_projectConformalConic, globe_projectAlbersEqualArea (Lambert azimuthal equal-area
-   * too), globe_projectCylindricalEqualArea or globe_projectSinusoidal.
+   * globe_projectConformalConic, globe_projectAlbersEqualArea (polar Lambert azimuthal
+   * equal-area too), globe_projectObliqueAzimuthalEqualArea, globe_projectCylindricalEqualArea
+   * or globe_projectSinusoidal.
    */
   const char* GetShaderFunctionName();
+
+  /**
+   * Whether the map is cut along the meridian opposite the central one, so that points a step
+   * apart on the globe can lie on opposite sides of the map: the sinusoidal projection, the
+   * conics and polar Lambert azimuthal equal-area.
+   */
+  bool HasMapCut();
 
   /**
    * Map units per radian of longitude along the x axis of a cylindrical projection
@@ -325,6 +339,7 @@ private:
     double latitudeOfOrigin, double centralMeridian, double falseEasting, double falseNorthing);
   // +1 when the conic's apex (or the azimuthal projection's centre) is the north pole.
   double GetApexHemisphere();
+  // The kinds with an apex at a pole: the conics and polar Lambert azimuthal equal-area.
   bool IsConic();
   bool ForwardUnchecked(double lon, double lat, double xy[2]);
   bool InverseUnchecked(double x, double y, double lonLat[2]);

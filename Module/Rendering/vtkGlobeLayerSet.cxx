@@ -1463,10 +1463,7 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
           s << "  " << lon << ".x -= floor(" << lon << ".x + 0.5);\n"
             << "  " << lat << ".x -= floor(" << lat << ".x + 0.5);\n";
         }
-        else if (e->Projection && (e->Projection->GetKind() == vtkGlobeMapProjection::Sinusoidal ||
-                   e->Projection->GetKind() == vtkGlobeMapProjection::LambertConformalConic ||
-                   e->Projection->GetKind() == vtkGlobeMapProjection::AlbersEqualArea ||
-                   e->Projection->GetKind() == vtkGlobeMapProjection::LambertAzimuthalEqualArea))
+        else if (e->Projection && e->Projection->HasMapCut())
         {
           // A map cut opposite the central meridian: a step east of a point next to it lands
           // on the map's other side. The step west then gives the derivative.

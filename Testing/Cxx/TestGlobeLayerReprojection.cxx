@@ -1,9 +1,9 @@
 // Layers in a CRS the GPU does not project (issue "Geodetic correctness": any CRS that PROJ
 // knows still works), reprojected on load into a geographic grid. The reference is
-// independent of PROJ: Snyder's ellipsoidal oblique Lambert azimuthal equal-area (USGS PP
-// 1395, eqs. 3-12 and 24-10 to 24-13) for EPSG:3035 (ETRS89-extended / LAEA Europe: GRS80,
-// centre 52 N 10 E, false origin (4,321 km, 3,210 km); ETRS89 and WGS 84 coincide here).
-// The GPU draws the polar aspects of this projection, not the oblique ones.
+// independent of PROJ: the Equal Earth projection's published formulas (Šavrič, Patterson and
+// Jenny 2018) on the ellipsoid through the authalic latitude (sin beta = q / q_p, Snyder 3-12),
+// as EPSG:8857 (WGS 84 / Equal Earth Greenwich) defines it. (This test used LAEA Europe,
+// EPSG:3035, until the GPU learned the oblique Lambert azimuthal projection.)
 //  A. Distinct nearest-filtered texels: every texel of the geographic grid whose centre lies
 //     inside a source texel (away from its edges by 2 %) holds that texel's colour.
 //  B. Heights linear in the source's map coordinates: the bilinear resampling reproduces them
@@ -23,12 +23,14 @@ namespace
 {
 vtkGlobeTest::Checklist Check;
 
-// LAEA Europe (EPSG:3035) in double, Snyder's formulas.
-struct LaeaEurope
+// Equal Earth (EPSG:8857) in double.
+struct EqualEarth
 {
   static constexpr double Deg = 3.14159265358979323846 / 180.0;
-  const double A = 6378137.0, F = 1.0 / 298.257222101, Lat0 = 52.0 * Deg, Lon0 = 10.0 * Deg;
-  double E = 0.0, Qp = 0.0, Rq = 0.0, SinB1 = 0.0, CosB1 = 0.0, D = 0.0;
+  const double A = 6378137.0, F = 1.0 / 298.257223563;
+  const double A1 = 1.340264, A2 = -0.081106, A3 = 0.000893, A4 = 0.003796;
+  const double M = std::sqrt(3.0) / 2.0;
+  double E = 0.0, Qp = 0.0, Rq = 0.0;
   double Q(double phi) const
   {
     const double s = std::sin(phi), e2 = this->E * this->E;
@@ -36,40 +38,40 @@ struct LaeaEurope
       (s / (1.0 - e2 * s * s) -
         std::log((1.0 - this->E * s) / (1.0 + this->E * s)) / (2.0 * this->E));
   }
-  LaeaEurope()
+  EqualEarth()
   {
     this->E = std::sqrt(this->F * (2.0 - this->F));
     this->Qp = this->Q(90.0 * Deg);
     this->Rq = this->A * std::sqrt(this->Qp / 2.0);
-    const double b1 = std::asin(this->Q(this->Lat0) / this->Qp);
-    this->SinB1 = std::sin(b1);
-    this->CosB1 = std::cos(b1);
-    const double s0 = std::sin(this->Lat0);
-    const double m1 = std::cos(this->Lat0) / std::sqrt(1.0 - this->E * this->E * s0 * s0);
-    this->D = this->A * m1 / (this->Rq * this->CosB1);
   }
   void Forward(double lon, double lat, double& e, double& n) const
   {
-    const double beta = std::asin(this->Q(lat * Deg) / this->Qp);
-    const double dl = lon * Deg - this->Lon0;
-    const double b = this->Rq *
-      std::sqrt(2.0 /
-        (1.0 + this->SinB1 * std::sin(beta) + this->CosB1 * std::cos(beta) * std::cos(dl)));
-    e = 4321000.0 + b * this->D * std::cos(beta) * std::sin(dl);
-    n = 3210000.0 +
-      (b / this->D) * (this->CosB1 * std::sin(beta) - this->SinB1 * std::cos(beta) * std::cos(dl));
+    const double psi = std::asin(this->M * this->Q(lat * Deg) / this->Qp);
+    const double p2 = psi * psi, p6 = p2 * p2 * p2;
+    e = this->Rq * lon * Deg * std::cos(psi) /
+      (this->M * (this->A1 + 3.0 * this->A2 * p2 + p6 * (7.0 * this->A3 + 9.0 * this->A4 * p2)));
+    n = this->Rq * psi * (this->A1 + this->A2 * p2 + p6 * (this->A3 + this->A4 * p2));
   }
 };
+const EqualEarth Reference;
+constexpr int Code = 8857;
 
-// Source raster: 64 x 48 texels of 10 km from (3,800 km E, 3,000 km N): the Massif Central
-// to Bavaria.
+// Source raster: 64 x 48 texels of 10 km from the map point of (2 E, 50 N): northern France
+// to the Alps.
 constexpr int W = 64, H = 48;
-constexpr double West = 3800000.0, North = 3000000.0, Pixel = 10000.0;
+constexpr double Pixel = 10000.0;
+double Corner(int axis)
+{
+  double x = 0.0, y = 0.0;
+  Reference.Forward(2.0, 50.0, x, y);
+  return std::round((axis == 0 ? x : y) / Pixel) * Pixel;
+}
+const double West = Corner(0), North = Corner(1);
 
 // The geographic texel centres of a reprojected layer, each with its source texel
 // coordinates (column, row from the north, texel centres at integers).
 template <typename F>
-void ForEachTexel(vtkGlobeLayer* layer, const LaeaEurope& laea, F&& f)
+void ForEachTexel(vtkGlobeLayer* layer, F&& f)
 {
   double e[4];
   layer->GetGeographicExtent(e);
@@ -81,7 +83,7 @@ void ForEachTexel(vtkGlobeLayer* layer, const LaeaEurope& laea, F&& f)
       const double lon = e[0] + (i + 0.5) * (e[1] - e[0]) / w;
       const double lat = e[3] - (j + 0.5) * (e[3] - e[2]) / h;
       double x, y;
-      laea.Forward(lon, lat, x, y);
+      Reference.Forward(lon, lat, x, y);
       f(static_cast<vtkIdType>(j) * w + i, (x - West) / Pixel - 0.5, (North - y) / Pixel - 0.5);
     }
   }
@@ -90,30 +92,30 @@ void ForEachTexel(vtkGlobeLayer* layer, const LaeaEurope& laea, F&& f)
 
 int TestGlobeLayerReprojection(int, char*[])
 {
-  const LaeaEurope laea;
-  std::printf("EPSG:3035 is not drawn directly: %s\n",
-    vtkGlobeMapProjection::IsSupportedEPSG(3035) ? "it is (unexpected)" : "reprojected");
-  Check.Expect(!vtkGlobeMapProjection::IsSupportedEPSG(3035) &&
+  std::printf("EPSG:%d is not drawn directly: %s\n", Code,
+    vtkGlobeMapProjection::IsSupportedEPSG(Code) ? "it is (unexpected)" : "reprojected");
+  Check.Expect(!vtkGlobeMapProjection::IsSupportedEPSG(Code) &&
       vtkGlobeMapProjection::IsSupportedEPSG(3413) &&
-      vtkGlobeMapProjection::IsSupportedEPSG(2154),
-    "IsSupportedEPSG: 3035 (oblique) no; 3413 and 2154 (Lambert conformal conic) yes");
+      vtkGlobeMapProjection::IsSupportedEPSG(3035),
+    "IsSupportedEPSG: 8857 (Equal Earth) no; 3413 and 3035 (Lambert azimuthal equal-area) yes");
 
   std::printf("A. Texels (nearest):\n");
-  auto image = vtkGlobeTest::ProjectedImage(3035, W, H, West, North, Pixel,
+  auto image = vtkGlobeTest::ProjectedImage(Code, W, H, West, North, Pixel,
     [](int i, int j) { return vtkGlobeTest::TexelColour(3, i, j); });
   const bool loaded = image->Update() && image->IsValid();
   double e[4];
   image->GetGeographicExtent(e);
-  Check.Expect(loaded && image->GetReprojectedFromEPSG() == 3035 &&
+  Check.Expect(loaded && image->GetReprojectedFromEPSG() == Code &&
       image->GetModelType() == vtkGlobeLayer::Geographic && image->GetEPSG() == 4326 &&
-      e[0] > 1.0 && e[1] < 16.0 && e[2] > 43.0 && e[3] < 51.0,
+      e[0] > 1.0 && e[0] < 3.0 && e[1] > 10.0 && e[1] < 14.0 && e[2] > 44.0 && e[2] < 47.0 &&
+      e[3] > 49.5 && e[3] < 50.5,
     vtkGlobeTest::Printf("loaded, reprojected from EPSG:%d into %d x %d geographic texels, box "
                          "W %.3f E %.3f S %.3f N %.3f",
       image->GetReprojectedFromEPSG(), image->GetNumberOfColumns(), image->GetNumberOfRows(), e[0], e[1], e[2],
       e[3]));
   vtkDataArray* pixels = image->GetData();
   int checked = 0, wrong = 0, outside = 0, transparentOutside = 0;
-  ForEachTexel(image, laea, [&](vtkIdType id, double fx, double fy) {
+  ForEachTexel(image, [&](vtkIdType id, double fx, double fy) {
     const double x = fx + 0.5, y = fy + 0.5; // texel edges at integers
     if (x < 0 || y < 0 || x >= W || y >= H)
     {
@@ -137,19 +139,19 @@ int TestGlobeLayerReprojection(int, char*[])
     wrong += same ? 0 : 1;
   });
   Check.Expect(checked > 2000 && wrong == 0 && outside > 0 && transparentOutside == outside,
-    vtkGlobeTest::Printf("%d texels checked against Snyder's LAEA Europe, %d show another "
+    vtkGlobeTest::Printf("%d texels checked against Equal Earth's formulas, %d show another "
                          "source texel; %d outside the source, %d of them transparent",
       checked, wrong, outside, transparentOutside));
 
   std::printf("B. Heights linear in map coordinates (bilinear):\n");
-  auto ramp = vtkGlobeTest::ProjectedHeights(3035, W, H, West, North, Pixel,
+  auto ramp = vtkGlobeTest::ProjectedHeights(Code, W, H, West, North, Pixel,
     [](int i, int j) { return static_cast<float>(3.0 * i + 7.0 * j); });
   ramp->FillVoidsOff();
-  Check.Expect(ramp->Update() && ramp->GetReprojectedFromEPSG() == 3035, "the ramp loaded and reprojected");
+  Check.Expect(ramp->Update() && ramp->GetReprojectedFromEPSG() == Code, "the ramp loaded and reprojected");
   vtkDataArray* heights = ramp->GetData();
   double worst = 0.0;
   int inside = 0, voids = 0, beyond = 0;
-  ForEachTexel(ramp, laea, [&](vtkIdType id, double fx, double fy) {
+  ForEachTexel(ramp, [&](vtkIdType id, double fx, double fy) {
     const double v = heights->GetComponent(id, 0);
     if (fx < -0.5 || fy < -0.5 || fx > W - 0.5 || fy > H - 0.5)
     {

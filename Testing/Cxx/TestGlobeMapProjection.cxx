@@ -149,7 +149,8 @@ void RoundTrips(vtkGlobeMapProjection* p, const char* what)
       const double lon =
         box[0] + (box[1] - box[0]) * (i == 60 ? 0.9999999 : i == 0 ? 1e-7 : i / 60.0);
       const double lat = box[2] + (box[3] - box[2]) * j / 60.0;
-      if (poleIsArc && std::abs(lat) == 90.0)
+      // (The domain's box, and for oblique Lambert azimuthal equal-area less its antipode cap.)
+      if ((poleIsArc && std::abs(lat) == 90.0) || !p->IsInValidDomain(lon, lat))
       {
         continue;
       }
@@ -197,6 +198,9 @@ int TestGlobeMapProjection(int, char*[])
   p->SetToMercator(51.0, 42.0);
   p->SetEllipsoid(6378245.0, 1.0 / 298.3);
   ExpectPoint(p, "Mercator B, Caspian Sea (GN 7-2)", 53.0, 53.0, 165704.29, 5171848.07, 0.01);
+  // IOGP GN 7-2, Lambert Azimuthal Equal Area: ETRS89 / LAEA Europe (EPSG:3035).
+  Expect(p->SetFromEPSG(3035), "SetFromEPSG(3035)");
+  ExpectPoint(p, "EPSG:3035 (GN 7-2)", 5.0, 50.0, 3962799.45, 2999718.85, 0.01);
   // IOGP GN 7-2, Popular Visualisation Pseudo Mercator (EPSG:3857).
   Expect(p->SetFromEPSG(3857), "SetFromEPSG(3857)");
   ExpectPoint(p, "EPSG:3857 (GN 7-2)", -Dms(100, 20, 0), Dms(24, 22, 54.433), -11169055.58,
@@ -350,6 +354,7 @@ int TestGlobeMapProjection(int, char*[])
     { 3577, vtkGlobeMapProjection::AlbersEqualArea, "GDA94 / Australian Albers" },
     { 6931, vtkGlobeMapProjection::LambertAzimuthalEqualArea, "EASE-Grid 2.0 North" },
     { 6932, vtkGlobeMapProjection::LambertAzimuthalEqualArea, "EASE-Grid 2.0 South" },
+    { 3035, vtkGlobeMapProjection::LambertAzimuthalEqualArea, "ETRS89-extended / LAEA Europe" },
     { 6933, vtkGlobeMapProjection::CylindricalEqualArea, "EASE-Grid 2.0 Global" },
     { 25832, vtkGlobeMapProjection::TransverseMercator, "ETRS89 / UTM zone 32N" },
     { 2193, vtkGlobeMapProjection::TransverseMercator, "NZGD2000 / NZTM 2000" },
@@ -383,19 +388,19 @@ int TestGlobeMapProjection(int, char*[])
     Expect(!q->SetFromDefinition("") && ErrorSaid(observer, "SetFromDefinition"),
       "SetFromDefinition('') refused");
   }
-  for (int code : { 27700, 3035, 2056 })
+  for (int code : { 27700, 8857, 2056 })
   {
     vtkNew<vtkGlobeMapProjection> q;
     q->AddObserver(vtkCommand::ErrorEvent, observer);
     char text[200];
     std::snprintf(text, sizeof(text), "EPSG:%d (%s) refused with an error naming it", code,
       code == 27700 ? "OSGB 36: PROJ shifts its datum"
-                    : code == 3035 ? "oblique Lambert azimuthal" : "oblique Mercator");
+                    : code == 8857 ? "Equal Earth" : "oblique Mercator");
     Expect(!q->SetFromEPSG(code) && ErrorSaid(observer, "EPSG:" + std::to_string(code)) &&
         q->GetEPSG() == 4326,
       text);
   }
-  for (int code : { 2154, 3112, 5070, 3577, 6931, 6932, 6933 })
+  for (int code : { 2154, 3112, 5070, 3577, 6931, 6932, 6933, 3035 })
   {
     const std::string what = "EPSG:" + std::to_string(code);
     Expect(p->SetFromEPSG(code), "SetFromEPSG(" + std::to_string(code) + ")");

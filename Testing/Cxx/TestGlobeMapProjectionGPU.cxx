@@ -57,6 +57,9 @@ void main()
   else if (globeKind == 5)
     uv = globe_projectAlbersEqualArea(ll.x, ll.y, ll.z, ll.w, globeProjection[0], globeProjection[1],
       globeProjection[2], globeProjection[3], globeProjection[4], globeProjection[5], globeProjection[6]);
+  else if (globeKind == 8)
+    uv = globe_projectObliqueAzimuthalEqualArea(ll.x, ll.y, ll.z, ll.w, globeProjection[0], globeProjection[1],
+      globeProjection[2], globeProjection[3], globeProjection[4], globeProjection[5], globeProjection[6]);
   else if (globeKind == 7)
     uv = globe_projectSinusoidal(ll.x, ll.y, ll.z, ll.w, globeProjection[0], globeProjection[1],
       globeProjection[2], globeProjection[3], globeProjection[4], globeProjection[5], globeProjection[6]);
@@ -79,6 +82,10 @@ namespace F = vtkGlobeShaderMath::f;
 
 int ShaderKind(vtkGlobeMapProjection* p)
 {
+  if (std::string(p->GetShaderFunctionName()) == "globe_projectObliqueAzimuthalEqualArea")
+  {
+    return 8;
+  }
   switch (p->GetKind())
   {
     case vtkGlobeMapProjection::Mercator:
@@ -127,6 +134,9 @@ F::vec2 Mirror(int kind, const float in[4], const float* pf)
         in[0], in[1], in[2], in[3], v[0], v[1], v[2], v[3], v[4], v[5], v[6]);
     case 6:
       return F::globe_projectCylindricalEqualArea(
+        in[0], in[1], in[2], in[3], v[0], v[1], v[2], v[3], v[4], v[5], v[6]);
+    case 8:
+      return F::globe_projectObliqueAzimuthalEqualArea(
         in[0], in[1], in[2], in[3], v[0], v[1], v[2], v[3], v[4], v[5], v[6]);
     case 7:
       return F::globe_projectSinusoidal(
@@ -195,6 +205,7 @@ int TestGlobeMapProjectionGPU(int, char*[])
     { "EPSG:3577 Australia (Albers)", 3577, 112.0, 154.0, -44.0, -10.0, false },
     { "EPSG:6931 11 km around the pole (Lambert azimuthal)", 6931, -5550.0, 5550.0, -5550.0,
       5550.0, true },
+    { "EPSG:3035 Europe (oblique Lambert azimuthal)", 3035, -30.0, 45.0, 25.0, 84.0, false },
     { "EPSG:6933 global (cylindrical equal-area)", 6933, -180.0, 180.0, -90.0, 90.0, false },
     { "MODIS tile h35v09, across the cut (sinusoidal)", 0, 18903158.83, 20015109.35, -1111950.52,
       0.0, true },

@@ -106,6 +106,7 @@ namespace D = vtkGlobeShaderMath::d;
       { "globe_projectTransverseMercator", NS::globe_projectTransverseMercator },                \
       { "globe_projectConformalConic", NS::globe_projectConformalConic },                        \
       { "globe_projectAlbersEqualArea", NS::globe_projectAlbersEqualArea },                      \
+      { "globe_projectObliqueAzimuthalEqualArea", NS::globe_projectObliqueAzimuthalEqualArea },  \
       { "globe_projectSinusoidal", NS::globe_projectSinusoidal },                                \
     {                                                                                            \
       "globe_projectCylindricalEqualArea", NS::globe_projectCylindricalEqualArea                 \
@@ -363,7 +364,7 @@ bool CheckOutsideDomain()
   };
   const Case cases[] = { { 3413, 0.0, -30.0 }, { 3031, 20.0, 10.0 }, { 32631, 30.0, 45.0 },
     { 32601, 10.0, 0.0 }, { 3395, 0.0, 89.9 }, { 3857, 0.0, -86.0 }, { 2154, 0.0, -89.9 },
-    { 3577, 0.0, 89.9 }, { 6931, 10.0, -89.9 } };
+    { 3577, 0.0, 89.9 }, { 6931, 10.0, -89.9 }, { 3035, -170.0, -52.0 }, { 3035, -166.0, -50.0 } };
   bool ok = true;
   for (const Case& c : cases)
   {
@@ -483,6 +484,20 @@ int TestGlobeMapProjectionShader(int, char*[])
         PolarInset("EPSG:6932 (EASE-Grid 2.0 S) to 50S", 6932, 0.0, -90.0, 4.5e6),
         PolarInset("EPSG:6931 11 km around the pole", 6931, 0.0, 90.0, 5550.0),
         PolarInset("EPSG:6932 1 deg at 70S, -179.99", 6932, -179.99, -70.0, 27800.0),
+      } },
+    { "Lambert azimuthal equal-area (oblique)",
+      {
+        { "EPSG:3035 (LAEA Europe) 30W..45E, 25N..84N", EPSG(3035), { -30.0, 45.0, 25.0, 84.0 } },
+        { "EPSG:3035 0.1 deg at the centre", EPSG(3035), { 9.95, 10.05, 51.95, 52.05 } },
+        PolarInset("EPSG:3035 11 km around the north pole", 3035, 0.0, 90.0, 5550.0),
+        { "LAEA equatorial, lon0 100E, 60E..140E, +-40", [](vtkGlobeMapProjection* p) {
+            p->SetToLambertAzimuthalEqualArea(0.0, 100.0);
+          },
+          { 60.0, 140.0, -40.0, 40.0 } },
+        PolarInset("LAEA 70N 40W, 1 deg at 179.99W, 60N", 0, -179.99, 60.0, 27800.0,
+          [](vtkGlobeMapProjection* p) { p->SetToLambertAzimuthalEqualArea(70.0, -40.0); }),
+        PolarInset("LAEA 30S 60E, 11 km at the south pole", 0, 0.0, -90.0, 5550.0,
+          [](vtkGlobeMapProjection* p) { p->SetToLambertAzimuthalEqualArea(-30.0, 60.0); }),
       } },
     { "cylindrical equal-area",
       {

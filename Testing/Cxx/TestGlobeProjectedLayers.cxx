@@ -17,8 +17,9 @@
 //     averaged by their weights give the exact mixture at 30, 60 and 85 degrees north (weights
 //     0.931, 2/3 and 0 for equirectangular; 1 for the conformal polar projection).
 //  E. The same for the families PROJ's database supplies: cylindrical equal-area (EASE-Grid 2.0
-//     Global) as the base, Lambert conformal conic (Lambert-93), Albers (Conus) and polar
-//     Lambert azimuthal equal-area (EASE-Grid 2.0 South), drawn without reprojection.
+//     Global) as the base, Lambert conformal conic (Lambert-93), Albers (Conus), polar
+//     Lambert azimuthal equal-area (EASE-Grid 2.0 South) and oblique Lambert azimuthal
+//     equal-area (LAEA Europe, over Scandinavia), drawn without reprojection.
 //  F. The same for a CRS without an EPSG code: MODIS's sinusoidal grid (a PROJ string; in the
 //     Streamed. variant a PNG whose .prj holds it, paged), across the map's cut at the
 //     antimeridian and near a pole.
@@ -360,8 +361,8 @@ void PartSynthetic()
 // and EASE-Grid 2.0 South (polar Lambert azimuthal equal-area) over Antarctica.
 void PartConicsAndEqualArea()
 {
-  std::printf("E. Lambert conformal conic, Albers, polar Lambert azimuthal and cylindrical "
-              "equal-area (nearest-filtered texels):\n");
+  std::printf("E. Lambert conformal conic, Albers, polar and oblique Lambert azimuthal and "
+              "cylindrical equal-area (nearest-filtered texels):\n");
   vtkGlobeTest::Scene scene;
   scene.Mapper->LightingOff();
   // EPSG:6933: 36 x 15 square texels from the north-west corner of the whole map (x +-17,367,530
@@ -386,7 +387,9 @@ void PartConicsAndEqualArea()
   auto lambert93 = layer("lambert93_2154", 1, 2154, 24, 24, 100000.0, 7150000.0, 50000.0);
   auto albers = layer("conus_albers_5070", 2, 5070, 32, 20, -2400000.0, 3200000.0, 150000.0);
   auto south = layer("ease2_south_6932", 3, 6932, 30, 30, -3.0e6, 3.0e6, 2.0e5);
-  std::vector<vtkGlobeLayer*> layers = { cea, lambert93, albers, south };
+  // EPSG:3035 from (5 E, 68 N) on: Scandinavia, 1,200 km square.
+  auto laea = layer("laea_europe_3035", 4, 3035, 24, 24, 4.0e6, 5.0e6, 50000.0);
+  std::vector<vtkGlobeLayer*> layers = { cea, lambert93, albers, south, laea };
   for (vtkGlobeLayer* l : layers)
   {
     l->SetFeatherWidth(0.0);
@@ -395,20 +398,22 @@ void PartConicsAndEqualArea()
   }
   const std::vector<ViewPoint> views = { { { 2.0, 38.0, 2.5e6 }, { 2.5, 46.5, 0.0 } },
     { { -98.0, 25.0, 5.0e6 }, { -98.0, 39.0, 0.0 } }, { { 20.0, -55.0, 4.0e6 }, { 0.0, -80.0, 0.0 } },
-    { { 179.0, 10.0, 8.0e6 }, { 179.0, 20.0, 0.0 } } };
+    { { 179.0, 10.0, 8.0e6 }, { 179.0, 20.0, 0.0 } }, { { 15.0, 52.0, 2.5e6 }, { 15.0, 62.0, 0.0 } } };
   int checked = 0;
   std::vector<int> perLayer;
   const int wrong = WrongTexels(scene, layers, views, checked, perLayer);
   char what[240];
   std::snprintf(what, sizeof(what),
-    "%d pixels (EPSG:6933 %d, 2154 %d, 5070 %d, 6932 %d): %d show another texel than the exact "
-    "projection's; %d active projected layers%s", checked, perLayer[0], perLayer[1], perLayer[2],
-    perLayer[3], wrong, scene.Mapper->GetLayerSet()->GetNumberOfActiveColorLayers(),
+    "%d pixels (EPSG:6933 %d, 2154 %d, 5070 %d, 6932 %d, 3035 %d): %d show another texel than "
+    "the exact projection's; %d active projected layers%s", checked, perLayer[0], perLayer[1],
+    perLayer[2], perLayer[3], perLayer[4], wrong,
+    scene.Mapper->GetLayerSet()->GetNumberOfActiveColorLayers(),
     lambert93->IsStreamed() ? ", streamed" : "");
   Check.Expect(perLayer[0] > 2000 && perLayer[1] > 2000 && perLayer[2] > 2000 &&
-      perLayer[3] > 2000 && wrong == 0 && lambert93->GetReprojectedFromEPSG() == 0 &&
+      perLayer[3] > 2000 && perLayer[4] > 2000 && wrong == 0 &&
+      lambert93->GetReprojectedFromEPSG() == 0 && laea->GetReprojectedFromEPSG() == 0 &&
       lambert93->IsStreamed() == vtkGlobeTest::Streamed() &&
-      scene.Mapper->GetLayerSet()->GetNumberOfActiveColorLayers() == 4,
+      scene.Mapper->GetLayerSet()->GetNumberOfActiveColorLayers() == 5,
     what);
 }
 

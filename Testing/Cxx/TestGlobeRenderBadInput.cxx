@@ -1,6 +1,6 @@
 // Bad input to the globe mapper: no layers; missing, corrupt, non-georeferenced rasters,
 // contradictory georeferencing, an extent outside its projection's domain, and a raster of NaN
-// among good ones (one of them UTM, one in EPSG:3035, oblique Lambert azimuthal equal-area,
+// among good ones (one of them UTM, one in EPSG:8857, Equal Earth,
 // which is reprojected on load); a camera
 // at the centre of the body, inside
 // it, and at NaN; a viewport without area. Each case: a clear error where it is one, no GL
@@ -128,15 +128,16 @@ int TestGlobeRenderBadInput(int, char*[])
     };
     {
       const auto grey = [](int, int) { return std::array<unsigned char, 3>{ 200, 200, 200 }; };
-      auto lambert = vtkSmartPointer<vtkGlobeLayer>::New();
-      lambert->SetRoleToColor();
-      lambert->SetFileName(
+      auto equalEarth = vtkSmartPointer<vtkGlobeLayer>::New();
+      equalEarth->SetRoleToColor();
+      // Equal Earth (EPSG:8857) around (10 E, 52 N).
+      equalEarth->SetFileName(
         vtkGlobeTest::WriteWorldFilePNG(
-          std::string(VTKGLOBE_TEMP_DIR) + "/laea_europe", 3035, 16, 16, 4321000, 3210000, 1000, grey)
+          std::string(VTKGLOBE_TEMP_DIR) + "/equal_earth", 8857, 16, 16, 778000, 6185000, 1000, grey)
           .c_str());
       // Not bad any more: a CRS the GPU does not project is reprojected on load.
-      addLayer(lambert);
-      reprojected = lambert;
+      addLayer(equalEarth);
+      reprojected = equalEarth;
       auto outside = vtkSmartPointer<vtkGlobeLayer>::New();
       outside->SetRoleToColor();
       outside->SetFileName(
@@ -188,8 +189,8 @@ int TestGlobeRenderBadInput(int, char*[])
     }
     Expect(scene.Mapper->GetLayerSet()->GetNumberOfActiveHeightLayers() == 2 &&
         scene.Mapper->GetLayerSet()->GetNumberOfActiveColorLayers() == 2 &&
-        reprojected->GetReprojectedFromEPSG() == 3035,
-      "the good layers stay active (2 height, one of them UTM; 2 colour, one of them EPSG:3035 "
+        reprojected->GetReprojectedFromEPSG() == 8857,
+      "the good layers stay active (2 height, one of them UTM; 2 colour, one of them EPSG:8857 "
       "reprojected on load)");
     Expect(vtkGlobeTest::CoveredPixels(depth) > 5000 && NoNaN(depth) && NoGLError(),
       "the globe still renders");

@@ -14,8 +14,8 @@
   The EPSG:3413 polar cap: the camera looks down on the pole, which is the window's centre, and
   every one of 17 x 17 points spread over the raster lands on a drawn (not background) pixel.
   Neither run reports an error (a layer the globe cannot draw is reported and skipped).
-- A projection the globe does not draw directly (EPSG:3035, oblique Lambert azimuthal
-  equal-area, from a world file and .prj) is reprojected on load and shown, and the script says so; a raster outside its projection's
+- A projection the globe does not draw directly (EPSG:8857, Equal Earth, from a world file
+  and .prj) is reprojected on load and shown, and the script says so; a raster outside its projection's
   domain is refused like the bad paths.
 """
 import os
@@ -112,10 +112,10 @@ class TestExampleViewGeoTIFF(ExampleTest):
         return base + ".tif"
 
     def test_other_crs_reprojected_and_outside_domain_refused(self):
-        lambert = self.write_world_file_tiff("laea_europe", 4321000.0, 3210000.0, 1000.0, 3035)
-        code, stdout, stderr = run_example("view_geotiff.py", lambert, "--out", self.out)
+        equal_earth = self.write_world_file_tiff("equal_earth", 778000.0, 6185000.0, 1000.0, 8857)
+        code, stdout, stderr = run_example("view_geotiff.py", equal_earth, "--out", self.out)
         self.assertEqual(code, 0, stderr)
-        self.assertIn("reprojected from EPSG:3035", stdout)
+        self.assertIn("reprojected from EPSG:8857", stdout)
         self.assertTrue(os.path.exists(self.out))
         os.remove(self.out)
         far = self.write_world_file_tiff("utm_far_away", 5.0e7, 9.0e7, 1000.0, 32610)

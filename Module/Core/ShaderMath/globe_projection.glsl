@@ -18,7 +18,8 @@
 //   Lambert conf. conic: F = F_r * (exp(-n (w - w_r)) - 1)  (n = 1: polar stereographic)
 // and the equal-area kinds are functions of q(lat) (the authalic function) and lambda:
 //   cylindrical:      (dLon, q - q_r)                    linear
-//   Albers, polar Lambert azimuthal: F = F_r * (sqrt(1 + K (q - q_r)) exp(i n dLon) - 1).
+//   Albers, polar Lambert azimuthal: F = F_r * (sqrt(1 + K (q - q_r)) exp(i n dLon) - 1),
+//   oblique Lambert azimuthal: the authalic sphere's azimuthal offsets (see its function).
 // and the sinusoidal projection (a sphere, MODIS) is
 //   (dLon cos lat + (lon_r - lon0)(cos lat - cos lat_r), dLat)   cos difference as a product
 // Inputs are hi + lo pairs (lo may be 0): differences to the reference are taken hi - hi
@@ -34,7 +35,9 @@
 //       lon_r - lon0, xi'_r, eta'_r), p6 = (C_r xi, C_r eta, alpha_1, alpha_2); Lambert
 //       conformal conic: p5 = (t(lat_r), n), p6.x = lon_r - lon0; Albers and Lambert
 //       azimuthal equal-area: p5 = (K, n), K = -(1 - e^2) a^2 / (n rho_r^2), p6 = (lon_r -
-//       lon0, (1 - e^2) / (q_p - q_r) for the azimuthal projection, else 0); sinusoidal:
+//       lon0, (1 - e^2) / (q_p - q_r) for the azimuthal projection, else 0); oblique Lambert
+//       azimuthal equal-area: p5 = (sin b_r, cos b_r, sin b1, cos b1), p6 = (lon_r - lon0,
+//       (1 - e^2) / q_p, sin(lon_r - lon0), cos(lon_r - lon0)); sinusoidal:
 //       p6.x = lon_r - lon0).
 // Points outside the domain return (-1, -1): outside every raster.
 //
@@ -564,6 +567,61 @@ vec2 globe_projectAlbersEqualArea(float lonHi, float lonLo, float latHi, float l
   }
   float dTheta = p5.y < 1.0f ? p5.y * globe_conicLongitudeDelta(s.DLon, p6.x) : s.DLon;
   return globe_azimuthalOffset(root, ratioM1, dTheta, p2, p3);
+}
+
+// Lambert azimuthal equal-area, oblique and equatorial aspects (e.g. EPSG:3035): the spherical
+// azimuthal projection of the authalic sphere (sin b = q / q_p), with D and 1 / D in the matrix.
+// In the centre's frame a point's unit vector is v = (cos b sin L, cos b1 sin b - sin b1 cos b
+// cos L, sin b1 sin b + cos b1 cos b cos L) (L = lon - lon0, b1 the centre's authalic latitude)
+// and its offset k (vx, vy), k = sqrt(2 / (1 + vz)). From the reference: k dv + (k - k_r) v_r,
+// dv from the differences of sin b, cos b, sin L and cos L written as products, and k - k_r =
+// -2 dvz / ((1 + vz)(1 + vz_r)(k + k_r)): relatively accurate for small offsets. cos b comes
+// from 1 - |sin b| = (q_p - |q|) / q_p, accurate up to the poles (cos b_r too, from the CPU). p5 = (sin b_r, cos b_r,
+// sin b1, cos b1), p6 = (L_r, (1 - e^2) / q_p, sin L_r, cos L_r).
+vec2 globe_projectObliqueAzimuthalEqualArea(float lonHi, float lonLo, float latHi, float latLo,
+  vec4 p0, vec4 p1, vec4 p2, vec4 p3, vec4 p4, vec4 p5, vec4 p6)
+{
+  GlobeProjectionStart s = globe_conformalStart(lonHi, lonLo, latHi, latLo, 1.0f, p0, p1, p4);
+  if (!s.Inside)
+  {
+    return vec2(-1.0f, -1.0f);
+  }
+  float e = p2.z;
+  float dSinB = p6.y * globe_equalAreaDifference(s.DSin, s.SinLat, p1.z, e);
+  float sinB = p5.x + dSinB;
+  float sg = s.SinLat < 0.0f ? -1.0f : 1.0f;
+  float toPole = p6.y *
+    globe_equalAreaDifference(s.CosLat * s.CosLat / (1.0f + sg * s.SinLat), 1.0f, sg * s.SinLat, e);
+  float cosB = sqrt(max(toPole * (2.0f - toPole), 0.0f));
+  // cos b - cos b_r as a quotient (relatively accurate away from the poles); within 1e-3 of a
+  // pole the plain difference, whose terms are both accurate there (a point a rounding beyond
+  // the pole has sin b off the pole but cos b = 0, and the quotient would blow that up).
+  float dCosB = cosB + p5.y < 1e-3f ? cosB - p5.y : -dSinB * (sinB + p5.x) / (cosB + p5.y);
+  float sm = 0.0f;
+  float cm = 0.0f;
+  globe_sinCos(p6.x + 0.5f * s.DLon, sm, cm);
+  float sh = 0.0f;
+  float ch = 0.0f;
+  globe_sinCos(0.5f * s.DLon, sh, ch);
+  float dSinL = 2.0f * cm * sh;
+  float dCosL = -2.0f * sm * sh;
+  // cos b cos L - cos b_r cos L_r
+  float dCosBCosL = cosB * dCosL + dCosB * p6.w;
+  float dvx = cosB * dSinL + dCosB * p6.z;
+  float dvy = p5.w * dSinB - p5.z * dCosBCosL;
+  float dvz = p5.z * dSinB + p5.w * dCosBCosL;
+  float vxr = p5.y * p6.z;
+  float vyr = p5.w * p5.x - p5.z * p5.y * p6.w;
+  float onePlusR = 1.0f + (p5.z * p5.x + p5.w * p5.y * p6.w);
+  float onePlus = onePlusR + dvz;
+  if (!(onePlus > 0.0038053f))
+  {
+    return vec2(-1.0f, -1.0f); // within 5 degrees of the centre's antipode: outside the domain
+  }
+  float k = sqrt(2.0f / onePlus);
+  float kr = sqrt(2.0f / onePlusR);
+  float dk = -2.0f * dvz / (onePlus * onePlusR * (k + kr));
+  return globe_projectionTexture(k * dvx + dk * vxr, k * dvy + dk * vyr, p2, p3);
 }
 
 // Lambert cylindrical equal-area (EASE-Grid 2.0 Global): linear in (dLon, dq).
