@@ -1188,9 +1188,11 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
   s << vtkGlobeFootprint;
   // Heights' level of detail: OpenGL's (the longer axis) per pixel; on the grid the shorter
   // axis within 16:1 (GLOBE_GRID_FOOTPRINT), since a grid cell seen at a grazing angle is long
-  // along the view, and the longer axis there levels distant peaks.
+  // along the view, and the longer axis there levels distant peaks. The screen pass's terrain
+  // refinement places points too: it sets the grid's rule for its steps, then 1 again for the
+  // shading (a variable there, not a constant).
   s << "#ifdef GLOBE_GRID_FOOTPRINT\nconst float globe_heightStretch = 1.0 / 16.0;\n#else\n"
-       "const float globe_heightStretch = 1.0;\n#endif\n";
+       "float globe_heightStretch = 1.0;\n#endif\n";
   if (streamed[0] || streamed[1])
   {
     s << vtkGlobePages;
