@@ -7,11 +7,13 @@
  * (vtkGlobePageSource). This cache holds the pages the frames show:
  * - one page atlas per data kind, a GL_TEXTURE_2D_ARRAY of (PageSize + 2 Border)^2 texels
  *   per slot: R32F for heights, RGBA8 for images; GPUMemory MiB each, fixed when allocated;
- * - one page table per layer (an RGBA32F texture) with one texel per page of every level:
- *   (slot, level, column, row) of the page itself when it is resident, else of its finest
- *   resident ancestor, so a lookup never misses (the coarsest level, one page, is read
- *   synchronously when the layer is first seen and is never evicted); each level's first
- *   row follows from level 0's page rows (GetPyramid), so a lookup reads one texel;
+ * - one page table per layer (an RGBA32UI texture) with one texel per page of every level,
+ *   holding two entries (slot << 6 | level, column | row << 16): the page itself when it is
+ *   resident, else its finest resident ancestor, and the same for the page a lookup one level
+ *   up finds, so a lookup never misses (the coarsest level, one page, is read synchronously
+ *   when the layer is first seen and is never evicted) and trilinear filtering reads one
+ *   texel; each level's first row follows from level 0's page rows (GetPyramid). A layer
+ *   with more than 65,535 pages along an axis is refused (raise PageSize);
  * - Request() marks a page used by this frame; a page that is not resident is queued for
  *   the worker threads (coarse levels first), which read it with vtkGlobeLayer::ReadPage;
  * - BeginFrame() uploads finished pages through a pixel-buffer object, at most UploadBudget
