@@ -2,7 +2,8 @@
 // raster (each texel's colour is its own index) streamed through a GPU page cache of 8 pages
 // of 64^2. Every frame, from the first, shows only texels of the raster (no undefined texel);
 // once refinement settles, every pixel shows the texel at its (lon, lat) of a level within
-// one of its ideal footprint level (0 wrong), across page borders and the antimeridian; a
+// one of its ideal footprint level (0 wrong), across page borders and the antimeridian (the
+// (lon, lat) of its mesh point, or with terrain refinement on also of its ray's exact hit); a
 // camera move that needs no new page loads none; the GPU memory stays within the cache; and a
 // raster many times larger than the caches streams with bounded RSS.
 #include "vtkGlobeRenderingTestHelpers.h"
@@ -196,8 +197,14 @@ FrameCheck CheckFrame(vtkGlobeTest::Scene& scene, const Levels& levels)
       // centre is within 2 % of a texel of its edge (float G-buffer against the GPU's own
       // coordinates). A coarse texel's colour can equal a finer one's (the mean of codes is a
       // code), so a pixel passes when any level within one of the ideal matches.
-      auto shows = [&](int l) {
-        const double tx = uv[i][0] * levels.W[l], ty = uv[i][1] * levels.H[l];
+      // With terrain refinement the pixel is drawn at its refined point, which on this level
+      // ground is the ray's exact hit (the mesh point where the refinement stands aside), so
+      // either reference passes.
+      std::array<double, 2> exact = uv[i];
+      const bool refined = scene.Mapper->GetTerrainRefinement() > 0 &&
+        scene.Mapper->GetHighPrecisionGeodetic() && ExactUV(scene, x, y, exact);
+      auto showsAt = [&](int l, const std::array<double, 2>& at) {
+        const double tx = at[0] * levels.W[l], ty = at[1] * levels.H[l];
         for (int dy = -1; dy <= 1; ++dy)
         {
           for (int dx = -1; dx <= 1; ++dx)
@@ -213,6 +220,7 @@ FrameCheck CheckFrame(vtkGlobeTest::Scene& scene, const Levels& levels)
         }
         return false;
       };
+      auto shows = [&](int l) { return showsAt(l, uv[i]) || (refined && showsAt(l, exact)); };
       bool near = false, any = false;
       for (int l = 0; l < n; ++l)
       {
