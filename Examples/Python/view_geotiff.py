@@ -7,7 +7,7 @@ raster whose GeoTIFF names another body's ellipsoid (e.g. the Moon's 1,737,400 m
 drawn alone on that body. Geographic (longitude/latitude) rasters and projected ones are drawn
 as they are, without reprojection, in the projections the globe knows: equirectangular, polar
 stereographic, Mercator, Web Mercator, transverse Mercator / UTM, Lambert conformal conic,
-Albers, polar Lambert azimuthal and cylindrical equal-area (EPSG codes in
+Albers, Lambert azimuthal (polar and oblique) and cylindrical equal-area (EPSG codes in
 Documentation/projections.md); a raster in any other CRS that PROJ knows is reprojected to
 longitude/latitude when it loads.
 """
