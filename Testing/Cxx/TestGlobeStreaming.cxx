@@ -21,6 +21,7 @@
 #include "vtkTIFFWriter.h"
 
 #include <chrono>
+#include <cstring>
 #include <fstream>
 #include <thread>
 
@@ -373,6 +374,67 @@ void OneLayerRefused(const std::string& image)
     "the other layers go on streaming (pages beyond the pinned ones load, the cache settles)");
   Checks.Expect(vtkGlobeTest::NoGLError(), "no OpenGL error with a refused layer");
 }
+
+// A raster with more pages along an axis than a page-table entry holds (65,535 columns at
+// level 0: 1,048,577 texels wide in pages of 16): refused once, with an error that names the
+// layer and the remedy; a streamed layer beside it goes on, and nothing else breaks.
+void TooManyPages()
+{
+  const int w = 65536 * 16 + 1, h = 2;
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(w, h, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  std::memset(image->GetScalarPointer(), 128, static_cast<size_t>(w) * h * 3);
+  const std::string path = Temp + "/streaming_too_wide.tif";
+  vtkNew<vtkTIFFWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName(path.c_str());
+  writer->Write();
+  vtkGlobeTest::WriteGlobalWorldFile(Temp + "/streaming_too_wide.tfw", w, h);
+
+  vtkGlobeTest::Scene scene(64, 48, 32);
+  vtkGlobePageCache* cache = scene.Mapper->GetPageCache();
+  cache->SetPageSize(16);
+  std::string said;
+  int errors = 0;
+  vtkNew<vtkCallbackCommand> record;
+  std::pair<int*, std::string*> sink(&errors, &said);
+  record->SetClientData(&sink);
+  record->SetCallback([](vtkObject*, unsigned long, void* client, void* message) {
+    auto* s = static_cast<std::pair<int*, std::string*>*>(client);
+    ++*s->first;
+    *s->second = message ? static_cast<const char*>(message) : "";
+  });
+  cache->AddObserver(vtkCommand::ErrorEvent, record);
+  vtkNew<vtkGlobeLayer> relief;
+  relief->SetFileName((std::string(VTKGLOBE_DATA_DIR) + "/earth/relief_2deg.tif").c_str());
+  relief->SetRoleToHeight();
+  relief->SetStreamingToOn();
+  scene.Mapper->AddLayer(relief);
+  vtkNew<vtkGlobeLayer> wide;
+  wide->SetFileName(path.c_str());
+  wide->SetName("too wide");
+  wide->SetRoleToColor();
+  wide->SetStreamingToOn();
+  scene.Mapper->AddLayer(wide);
+  const double camera[3] = { 10.0, 20.0, 2.0e7 }, target[3] = { 10.0, 20.0, 0.0 };
+  scene.Look(camera, target, 40.0);
+  for (int i = 0; i < 3; ++i)
+  {
+    scene.Window->Render();
+  }
+  const int covered = vtkGlobeTest::CoveredPixels(vtkGlobeTest::ReadDepth(scene.Window));
+  std::printf("  a layer of %d x %d texels in pages of 16: %d error(s): %s; %d streamed layers "
+              "composed, %d pixels covered\n",
+    w, h, errors, said.c_str(), scene.Mapper->GetLayerSet()->GetNumberOfStreamedLayers(), covered);
+  Checks.Expect(errors == 1 && said.find("too wide") != std::string::npos &&
+      said.find("65537 x 1 pages") != std::string::npos &&
+      said.find("raise PageSize") != std::string::npos,
+    "a layer with more than 65,535 pages along an axis is refused once, naming it and the remedy");
+  Checks.Expect(scene.Mapper->GetLayerSet()->GetNumberOfStreamedLayers() == 1 && covered > 500 &&
+      vtkGlobeTest::NoGLError(),
+    "the streamed layer beside it is composed, the globe renders, no OpenGL error");
+}
 } // namespace
 
 int TestGlobeStreaming(int, char*[])
@@ -490,6 +552,7 @@ int TestGlobeStreaming(int, char*[])
   Checks.Expect(vtkGlobeTest::NoGLError(), "no OpenGL error");
 
   OneLayerRefused(path);
+  TooManyPages();
   MemoryBound();
   return Checks.Result();
 }
