@@ -1,4 +1,5 @@
 #include "vtkGlobeMapProjection.h"
+#include "vtkGlobeShaderMath.h"
 
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -182,6 +183,13 @@ Conic MakeConic(vtkGlobeMapProjection* p)
     p->GetCentralMeridian(), p->GetFalseEasting(), p->GetFalseNorthing());
 }
 
+// The authalic function q of sin(lat) (Snyder 3-12), e2 the squared eccentricity.
+double AuthalicQ(double e2, double s)
+{
+  const double e = std::sqrt(e2);
+  return (1.0 - e2) * (s / (1.0 - e2 * s * s) + (e > 0.0 ? std::atanh(e * s) / e : s));
+}
+
 // Lambert azimuthal equal-area in an oblique or equatorial aspect on the ellipsoid (Snyder,
 // USGS PP 1395, eqs. 3-12, 24-19 to 24-21 and 24-25 to 24-30): the spherical azimuthal
 // projection of the authalic sphere (radius Rq, authalic latitude beta, sin beta = q / q_p),
@@ -205,12 +213,7 @@ public:
     this->CosB1 = this->CosBeta(lat0);
     this->D = a * std::cos(lat0 * Deg) / std::sqrt(1.0 - this->E2 * s0 * s0) / (this->Rq * this->CosB1);
   }
-  // The authalic function q of sin(lat) (Snyder 3-12).
-  double Q(double s) const
-  {
-    return (1.0 - this->E2) *
-      (s / (1.0 - this->E2 * s * s) + (this->E > 0.0 ? std::atanh(this->E * s) / this->E : s));
-  }
+  double Q(double s) const { return AuthalicQ(this->E2, s); }
   // 1 + cos of the angle from the centre on the authalic sphere: the oblique aspects' valid
   // domain leaves out a cap of 5 degrees around the antipode, which maps to the image's rim
   // (radial scale cos(c / 2) -> 0: the inverse loses its accuracy there).
@@ -222,15 +225,14 @@ public:
   static constexpr double AntipodeCap = 0.0038053019082548; // 1 - cos(5 degrees)
   double SinBeta(double lat) const { return this->Q(std::sin(lat * Deg)) / this->Qp; }
   // cos(beta), relatively accurate up to the poles: from 1 - |sin beta| = (q_p - |q|) / q_p,
-  // written in 1 - |sin lat| = cos^2 / (1 + |sin lat|) (q_p - q as a product, as the GPU does).
+  // with q_p - q from 1 - |sin lat| = cos^2 / (1 + |sin lat|) through the shaders' own
+  // difference formula (its double mirror), as the GPU computes it.
   double CosBeta(double lat) const
   {
     const double s = std::abs(std::sin(lat * Deg)), c = std::cos(lat * Deg);
-    const double u = c * c / (1.0 + s);
-    const double w = 1.0 - this->E2 * s;
-    const double first = u * (1.0 + this->E2 * s) / ((1.0 - this->E2) * (1.0 - this->E2 * s * s));
-    const double second = this->E > 0.0 ? std::atanh(this->E * u / w) / this->E : u;
-    const double t = (1.0 - this->E2) * (first + second) / this->Qp;
+    const double t = (1.0 - this->E2) *
+      vtkGlobeShaderMath::d::globe_equalAreaDifference(c * c / (1.0 + s), 1.0, s, this->E) /
+      this->Qp;
     return std::sqrt(std::max(0.0, t * (2.0 - t)));
   }
   // False at the antipode of the centre, which has no image.
@@ -1527,11 +1529,10 @@ bool vtkGlobeMapProjection::ComputeShaderParametersAt(const double origin[2],
       }
       if (this->Kind == LambertAzimuthalEqualArea)
       {
-        // (q_p - q_r) / (1 - e^2), q / (1 - e^2) = sin / (1 - e^2 sin^2) + atanh(e sin) / e.
-        const auto qOver = [e](double s) {
-          return s / (1.0 - e * e * s * s) + (e > 0.0 ? std::atanh(e * s) / e : s);
-        };
-        P[25] = 1.0 / (qOver(1.0) - qOver(sr));
+        // 1 / ((q_p - q_r) / (1 - e^2)), the difference written in 1 - sin = cos^2 / (1 + sin).
+        const double cr = std::cos(latR);
+        P[25] = 1.0 /
+          vtkGlobeShaderMath::d::globe_equalAreaDifference(cr * cr / (1.0 + sr), 1.0, sr, e);
       }
       break;
     }

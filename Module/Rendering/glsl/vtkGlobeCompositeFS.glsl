@@ -118,13 +118,13 @@ void main()
     float b = globeMaximumRadius * globeRadiiScaled.z;
     float e2 = 1.0 - (b * b) / (a * a);
     // What a failed refinement returns to.
-    float lonLo0 = lonLo, latLo0 = latLo, lon0 = lon, lat0 = lat, h0 = h;
-    vec2 gradient0 = gradient;
+    // (The heights are composed again below, at the point kept.)
+    float lonLo0 = lonLo, latLo0 = latLo, lon0 = lon, lat0 = lat;
     vec3 n0 = n;
     float residual0 = height - h;
     float t = 0.0;
     // Not with a parallel projection (globeDepthMap.x 2), nor where even the footprint's
-    // shorter axis exceeds 100 km: the relief is then a tenth of a pixel at most, and steps
+    // shorter axis exceeds 300 km: the relief is then a few hundredths of a pixel, and steps
     // along rays that graze a disc a few pixels wide chased heights filtered over hundreds of
     // kilometres (TestGlobeVeryFar: 146 m median error unrefined, 451 m refined at 1e9 m).
     float footprint = globeMeanRadius *
@@ -169,8 +169,6 @@ void main()
       latLo = latLo0;
       lon = lon0;
       lat = lat0;
-      h = h0;
-      gradient = gradient0;
       n = n0;
       t = 0.0;
     }
