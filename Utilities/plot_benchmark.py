@@ -16,7 +16,7 @@ the JSON under "pareto", and, with --markdown, the report's generated tables are
 between the markers <!-- BEGIN GENERATED --> and <!-- END GENERATED -->.
 
 --windows takes runs of `GlobeBenchmark --grid-only --window WxH` in several windows and puts
-the automatic grid next to the fixed 512^2 one across them: a markdown table on stdout and
+the automatic grid (the defaults) next to a fixed 512^2 one across them: a markdown table on stdout and
 DIR/automatic-grid-<scene>.png (frame time against error, one line per grid policy through
 the windows).
 """
@@ -27,13 +27,15 @@ import math
 import os
 import sys
 
-FAMILY_ORDER = ["baseline", "grid", "grid-window", "depth", "precision", "composition", "effects"]
+FAMILY_ORDER = ["baseline", "grid", "grid-window", "depth", "refinement", "precision", "composition",
+                "effects"]
 # RGB, marker style (vtkPlotPoints: 1 cross, 2 plus, 3 square, 4 circle, 5 diamond)
 STYLE = {
     "baseline": ((0, 0, 0), 5),
     "grid": ((31, 119, 180), 4),
     "grid-window": ((44, 160, 44), 3),
     "depth": ((214, 39, 40), 4),
+    "refinement": ((23, 190, 207), 3),
     "precision": ((148, 103, 189), 2),
     "composition": ((255, 127, 14), 5),
     "effects": ((140, 86, 75), 2),
@@ -308,14 +310,15 @@ def markdown(data, fronts):
 
 
 def window_rows(datas):
-    """(scene, window, policy) -> row, policy "fixed" (the baseline, 512^2), "automatic" or
-    "sphere" (VTK's textured sphere), from runs in different windows."""
+    """(scene, window, policy) -> row, policy "fixed" (512^2), "automatic" (the baseline: the
+    mapper's defaults) or "sphere" (VTK's textured sphere), from runs in different windows."""
     table = {}
     for data in datas:
         w, h = data["settings"]["window"]
         for r in data["rows"]:
-            policy = ("fixed" if r["family"] == "baseline" else
-                      "automatic" if r["setting"].startswith("automatic") else
+            policy = ("fixed" if r["family"] == "grid" and r["setting"] == "512^2" else
+                      "automatic" if (r["family"] == "baseline" and
+                                      not r["setting"].endswith("repeated last")) else
                       "sphere" if r["method"] == "sphere" else None)
             if policy:
                 table[(r["scene"], (w, h), policy)] = r

@@ -136,7 +136,8 @@ public:
   ///@{
   /**
    * Per-pixel terrain refinement (vtkGlobeMapper::SetTerrainRefinement): Newton steps along
-   * each pixel's view ray from the rasterized mesh to the composed heights, 0 (off) to 4.
+   * each pixel's view ray from the rasterized mesh to the composed heights, 0 (off) to 4
+   * (default 1).
    */
   vtkSetClampMacro(TerrainRefinement, int, 0, 4);
   vtkGetMacro(TerrainRefinement, int);
@@ -202,7 +203,7 @@ protected:
   double HeightColorRange[2] = { 0.0, 1.0 };
   double Eye[3] = { 0, 0, 0 };
   double ClipToEye[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
-  int TerrainRefinement = 0;
+  int TerrainRefinement = 1;
   double Chord[4] = { 0, 0, 0, -1 };
   double ClipW[4] = { 0, 0, 0, 0 };
   double DepthMap[3] = { 0, 0, 0 };

@@ -26,8 +26,9 @@ void Expect(bool condition, const std::string& what)
 
 // Mount Rainier with its inset scaled by 1.5 and raised by 40 m: once by SetValueScale and
 // SetValueOffset after the first frames (no load, no upload), once loaded that way. The
-// G-buffer heights, the pictures and the CPU terrain must agree to float rounding.
-bool RescaledAsLoaded(bool streamed)
+// G-buffer heights, the pictures and the CPU terrain must agree to float rounding. With
+// terrain refinement (the default) and without it.
+bool RescaledAsLoaded(bool streamed, int refinement)
 {
   const double camera[3] = { -121.76, 46.60, 9000.0 }, target[3] = { -121.76, 46.853, 3000.0 };
   struct Result
@@ -41,6 +42,7 @@ bool RescaledAsLoaded(bool streamed)
   };
   auto run = [&](bool later) {
     vtkGlobeTest::Scene scene;
+    scene.Mapper->SetTerrainRefinement(refinement);
     scene.Mapper->AddLayer(vtkGlobeTest::FileLayer("earth/relief_2deg.tif", true));
     auto inset = vtkGlobeTest::FileLayer("earth/mt_rainier_90m.tif", true);
     scene.Mapper->AddLayer(inset);
@@ -108,26 +110,35 @@ bool RescaledAsLoaded(bool streamed)
       within += d <= 0.005 ? 1 : 0;
     }
   }
-  int worstPixel = 0, differing = 0;
+  int worstPixel = 0, differing = 0, beyondOne = 0;
   for (size_t i = 0; i < loaded.Pixels.size() && i < rescaled.Pixels.size(); ++i)
   {
     const int d = std::abs(int(loaded.Pixels[i]) - int(rescaled.Pixels[i]));
     worstPixel = std::max(worstPixel, d);
     differing += d > 0 ? 1 : 0;
+    beyondOne += d > 1 ? 1 : 0;
   }
-  std::printf("%s, rescaled vs loaded: %d and %d loads, %d and %d uploads; G-buffer heights over %d "
-              "pixels: %d within 5 mm, all within %.2g m; %d of %zu colour values differ, by at "
-              "most %d; summit %.4f and %.4f m\n",
-    streamed ? "streamed" : "in-core", rescaled.Loads, loaded.Loads, rescaled.Uploads, loaded.Uploads, covered, within, worstHeight,
-    differing, loaded.Pixels.size(), worstPixel, rescaled.Summit, loaded.Summit);
+  std::printf("%s, %d refinement step(s), rescaled vs loaded: %d and %d loads, %d and %d uploads; "
+              "G-buffer heights over %d pixels: %d within 5 mm, all within %.2g m; %d of %zu colour "
+              "values differ, %d by more than 1, by at most %d; summit %.4f and %.4f m\n",
+    streamed ? "streamed" : "in-core", refinement, rescaled.Loads, loaded.Loads, rescaled.Uploads, loaded.Uploads, covered, within, worstHeight,
+    differing, loaded.Pixels.size(), beyondOne, worstPixel, rescaled.Summit, loaded.Summit);
   // The textures differ by float rounding only: the inset mapped in float on the GPU and its
   // MIP levels averaged from other floats, a few ulp (0.5 mm each at 6.6 km). A grid vertex
   // displaced by dh moves a pixel's hit along a slope s seen at grazing angle g by
   // dh * s / sin(g): up to about 10x on this view's ridges, hence centimetres at the worst
   // pixels: 1 % of the pixels may pass 5 mm, none 5 cm (streamed: 10 cm, for the rounding of
   // the page pyramid's levels, made in the stored scale, on top).
+  // Refined, a pixel's Newton steps are kept or dropped on whether they shrink its residual
+  // (Documentation/rendering.md "Terrain refinement", 3.): a discontinuous choice, so at a
+  // grazing ridge pixel such a rounding difference can keep another point, and the colour of
+  // another texel and slope. Then at most 1 colour value in 4,000 (50 of this view's 202,500)
+  // may differ by more than 1, and by at most 16 of 255 (measured 2026-11-28, streamed: 13
+  // values in 7 pixels, at most 10); unrefined, none.
+  const bool colours = refinement == 0 ? worstPixel <= 1
+                                       : beyondOne * 4000 <= int(loaded.Pixels.size()) && worstPixel <= 16;
   return rescaled.Loads == 0 && rescaled.Uploads == 0 && rescaled.Settled && loaded.Settled &&
-    covered > 10000 && within >= 0.99 * covered && worstHeight <= (streamed ? 0.1 : 0.05) && worstPixel <= 1 &&
+    covered > 10000 && within >= 0.99 * covered && worstHeight <= (streamed ? 0.1 : 0.05) && colours &&
     differing <= 100 && std::abs(rescaled.Summit - loaded.Summit) <= 0.001 &&
     std::abs(loaded.Summit - (1.5 * 4392.0 + 40.0)) < 1.5 * 60.0;
 }
@@ -257,7 +268,13 @@ int TestGlobeRedundantWork(int, char*[])
   Expect(composite->GetFragmentShaderSource().find("globeColor0") == std::string::npos,
     "the composition source no longer samples a colour layer");
 
-  Expect(RescaledAsLoaded(false), "a rescaled layer draws what the same layer loaded that way draws");
-  Expect(RescaledAsLoaded(true), "... and so does a rescaled streamed layer, without a re-load");
+  for (int refinement : { 0, 1 })
+  {
+    const std::string refined = refinement ? " (refined)" : " (not refined)";
+    Expect(RescaledAsLoaded(false, refinement),
+      "a rescaled layer draws what the same layer loaded that way draws" + refined);
+    Expect(RescaledAsLoaded(true, refinement),
+      "... and so does a rescaled streamed layer, without a re-load" + refined);
+  }
   return Checks.Result();
 }
