@@ -4,6 +4,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationObjectBaseVectorKey.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLPolyDataMapper.h"
 #include "vtkProp.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
@@ -35,6 +36,66 @@ bool Insert(std::string& source, const std::string& declarations, const std::str
   source.insert(end, code);
   source.insert(main, declarations);
   return true;
+}
+
+/// Inserts text after (or before) every occurrence of a pattern; how many there were.
+int InsertAt(std::string& source, const std::string& pattern, const std::string& text, bool after)
+{
+  int count = 0;
+  for (size_t at = source.find(pattern); at != std::string::npos; at = source.find(pattern, at))
+  {
+    const size_t where = after ? at + pattern.size() : at;
+    source.insert(where, text);
+    at = where + text.size() + (after ? 0 : pattern.size());
+    ++count;
+  }
+  return count;
+}
+
+/**
+ * The logarithmic mode's code, in the last stage that writes gl_Position (the geometry shader
+ * where there is one: VTK's impostor mappers project there, their vertex shader gives view
+ * coordinates) and at the end of the fragment shader. Depths VTK writes itself are turned
+ * into eye distances rather than overwritten (VTK 9.1's shader lines, vtkOpenGLSphereMapper,
+ * vtkOpenGLStickMapper and points or lines drawn as spheres or tubes), and VTK's coincident
+ * topology offset (cOffset / 65000 of the depth range) is kept as the same offset of the
+ * logarithmic depth. False when a stage has no main().
+ */
+bool InjectLogarithmic(std::string& vs, std::string& gs, std::string& fs)
+{
+  const std::string clipDeclaration = "uniform vec2 vtkGlobeDepthClip;\n";
+  const std::string clip = "  // vtkGlobeDepthPass (logarithmic): near plane at 1 mm\n"
+                           "  gl_Position.z = gl_Position.w * vtkGlobeDepthClip.x + vtkGlobeDepthClip.y;\n";
+  bool positions = false;
+  if (gs.find("EmitVertex") != std::string::npos && gs.find("void main") != std::string::npos)
+  {
+    InsertAt(gs, "EmitVertex", clip, false);
+    gs.insert(gs.find("void main"), clipDeclaration);
+    positions = true;
+  }
+  else
+  {
+    // Clip z: a perspective z with a 1 mm near plane, so geometry up to the eye is kept (the
+    // camera's near plane no longer matters); VTK's w_clip is the eye distance along the view.
+    positions = Insert(vs, clipDeclaration, clip);
+  }
+  // Depths a mapper computes (a sphere's or tube's surface rather than its quad's): their eye
+  // distance. pos = VCDCMatrix * vertexVC, so pos.w is it; VTK's points as spheres move
+  // window depth d0 = S - K / w0 to (S - d0) / Q + S, i.e. to the eye distance -Q w0.
+  InsertAt(fs, "gl_FragDepth = (pos.z / pos.w + 1.0) / 2.0;", "\n  vtkGlobeEyeW = pos.w;", true);
+  InsertAt(fs, "gl_FragDepth = (ZCalcS - gl_FragCoord.z) / ZCalcQ + ZCalcS;",
+    "\n  vtkGlobeEyeW = -ZCalcQ / gl_FragCoord.w;", true);
+  InsertAt(fs, "+ 1.0*cOffset/65000;", "\n  vtkGlobeDepthBias = cOffset / 65000.0;", true);
+  // Fragment depth from the exact per-fragment w (1 / gl_FragCoord.w), not interpolated z.
+  const bool depth = Insert(fs,
+    "uniform float vtkGlobeLogDepthScale;\n"
+    "float vtkGlobeEyeW = -1.0;\n"
+    "float vtkGlobeDepthBias = 0.0;\n",
+    "  // vtkGlobeDepthPass (logarithmic): depth = log2(1 + w) / log2(1 + far)\n"
+    "  gl_FragDepth = log2(max(1e-6, 1.0 + (vtkGlobeEyeW > 0.0 ? vtkGlobeEyeW\n"
+    "                                                         : 1.0 / gl_FragCoord.w))) *\n"
+    "      vtkGlobeLogDepthScale + vtkGlobeDepthBias;\n");
+  return positions && depth;
 }
 } // namespace
 
@@ -120,29 +181,23 @@ void vtkGlobeDepthPass::Render(const vtkRenderState* s)
 //------------------------------------------------------------------------------
 void vtkGlobeDepthPass::InjectDepthCode(std::string& vs, std::string& fs)
 {
-  if (this->Mode != Logarithmic)
-  {
-    return;
-  }
-  // Clip z: a perspective z with a 1 mm near plane, so geometry up to the eye is kept (the
-  // camera's near plane no longer matters); VTK's w_clip is the eye distance along the view.
-  const bool vsOk = Insert(vs, "uniform vec2 vtkGlobeDepthClip;\n",
-    "  // vtkGlobeDepthPass (logarithmic): near plane at 1 mm\n"
-    "  gl_Position.z = gl_Position.w * vtkGlobeDepthClip.x + vtkGlobeDepthClip.y;\n");
-  // Fragment depth from the exact per-fragment w (1 / gl_FragCoord.w), not interpolated z.
-  const bool fsOk = Insert(fs, "uniform float vtkGlobeLogDepthScale;\n",
-    "  // vtkGlobeDepthPass (logarithmic): depth = log2(1 + w) / log2(1 + far)\n"
-    "  gl_FragDepth = log2(max(1e-6, 1.0 + 1.0 / gl_FragCoord.w)) * vtkGlobeLogDepthScale;\n");
-  if (!vsOk || !fsOk)
+  std::string noGeometryShader;
+  if (this->Mode == Logarithmic && !InjectLogarithmic(vs, noGeometryShader, fs))
   {
     vtkErrorMacro(<< "InjectDepthCode: a shader has no main(); its depth stays perspective");
   }
 }
 
 bool vtkGlobeDepthPass::PostReplaceShaderValues(
-  std::string& vs, std::string&, std::string& fs, vtkAbstractMapper*, vtkProp*)
+  std::string& vs, std::string& gs, std::string& fs, vtkAbstractMapper* mapper, vtkProp*)
 {
-  this->InjectDepthCode(vs, fs);
+  // Polydata mappers only: the GPU volume ray caster also calls the render passes' hooks,
+  // and its rays stop at the depth buffer's perspective depth (not covered, depth.md).
+  if (this->Mode == Logarithmic && vtkOpenGLPolyDataMapper::SafeDownCast(mapper) &&
+    !InjectLogarithmic(vs, gs, fs))
+  {
+    vtkErrorMacro(<< "PostReplaceShaderValues: a shader has no main(); its depth stays perspective");
+  }
   return true;
 }
 

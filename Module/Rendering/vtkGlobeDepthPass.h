@@ -9,8 +9,12 @@
  * polydata, glyphs, the globe's own rasterization) a fragment depth
  *     depth = log2(max(1e-6, 1 + w)) / log2(1 + far),   w = 1 / gl_FragCoord.w
  * (Cozzi & Ring / Outerra, with C = 1; w is the eye distance along the view axis, exact per
- * fragment, not interpolated per vertex), and in the vertex shader the matching clip z so that
- * nothing in front of the eye is clipped by the near plane. The relative resolution is then
+ * fragment, not interpolated per vertex), and in the vertex shader (the geometry shader where
+ * a mapper has one) the matching clip z so that nothing in front of the eye is clipped by the
+ * near plane. Depths a mapper writes itself keep their meaning: impostor spheres and sticks
+ * (vtkOpenGLSphereMapper, vtkOpenGLStickMapper) and points or lines drawn as spheres or tubes
+ * get the logarithmic depth of their surface, and VTK's coincident-topology offset (edges over
+ * surfaces, lines, points) stays the same offset of the depth range. The relative resolution is then
  * constant: dw / (1 + w) = ln 2 * log2(1 + far) / 2^24 (about 1e-6 for far = 1e7 m).
  *
  * @code
@@ -25,8 +29,9 @@
  * Reading depth back (pickers, tests) must invert the mode: GetPerspectiveDepth() turns a
  * window depth of the last frame into VTK's convention (in double), so
  * vtkRenderer::DisplayToWorld works on it; vtkGlobePointPicker does this.
- * Not covered in Logarithmic mode: depth peeling (it compares gl_FragCoord.z), coincident
- * topology offsets (overwritten), impostor mappers (their fragment depth is the quad's).
+ * Not covered in Logarithmic mode (Documentation/depth.md): depth peeling (it compares
+ * gl_FragCoord.z), volume mappers (their rays stop at perspective depth), and passes that read
+ * depth as perspective (SSAO, eye-dome lighting, depth of field).
  */
 #ifndef vtkGlobeDepthPass_h
 #define vtkGlobeDepthPass_h

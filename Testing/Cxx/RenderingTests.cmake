@@ -22,7 +22,9 @@ set(globe_rendering_tests
 # Depth for the whole scene: clipping policy, depth modes, picking.
 list(APPEND globe_rendering_tests
   TestGlobeClippingRange.cxx
-  TestGlobeDepthModes.cxx)
+  TestGlobeDepthModes.cxx
+  # Logarithmic depth for impostors, points as spheres and surfaces with edges.
+  TestGlobeDepthActors.cxx)
 
 # Hard cases (issue 5, Documentation/depth.md "Hard cases"): each scene in both depth modes.
 list(APPEND globe_rendering_tests
