@@ -379,8 +379,10 @@ case "$command" in
       fi
     done
     rm -f "$build/benchmark.json" "$images"/accuracy-vs-time-*.png
-    echo "== running the benchmark (a program, not a test)"
-    with_display "$build/bin/GlobeBenchmark" --json "$build/benchmark.json" "$@"
+    echo "== running the benchmark (a program, not a test; glibc malloc tuned)"
+    with_display env \
+      GLIBC_TUNABLES=glibc.malloc.mmap_threshold=268435456:glibc.malloc.trim_threshold=536870912 \
+      "$build/bin/GlobeBenchmark" --json "$build/benchmark.json" "$@"
     echo "== plotting"
     with_display env PYTHONPATH="$build/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}" \
       /usr/bin/python3 "$root/Utilities/plot_benchmark.py" "$build/benchmark.json" \

@@ -19,10 +19,10 @@
 //              400 km up rising over the limb, its lower part behind the Earth.
 // Settings, in families (each a list of setters applied to the defaults; see Settings()):
 //   baseline     the mapper's defaults, read from a new vtkGlobeMapper: the automatic grid
-//                (3.2 px per cell: 250^2 at 800 x 600) with 1 terrain refinement step, Default
+//                (1.6 px per cell: 500^2 at 800 x 600) with 1 terrain refinement step, Default
 //                depth with the vtkGlobeClippingRange policy, lighting only, layers as loaded
 //                (linear, feather 8, no projection weight);
-//   grid         grid 128^2 .. 1024^2, and the automatic grid at 1.6 px per cell (refined);
+//   grid         grid 128^2 .. 1024^2, and the automatic grid at 3.2 px per cell (refined);
 //   grid-window  grid = 1/2, 1, 2 x the window's larger side;
 //   depth        Default / Logarithmic (vtkGlobeDepthPass) x VTK's plain clipping / the policy;
 //   precision    float geodetic coordinates (vtkGlobeMapper::HighPrecisionGeodeticOff) against
@@ -30,10 +30,10 @@
 //   composition  colour layers nearest, feather 0 / 32 texels (all layers), Kooima's projection
 //                weight (colour layers);
 //   effects      unlit, each effect alone on top of lighting, all;
-//   refinement   per-pixel terrain refinement: none, 2 and 3 steps at the default grid; the
-//                defaults until 2026-11-28 (1.6 px per cell, unrefined) and the benchmark's
-//                baseline until then (512^2, unrefined); 2 steps and none at 128^2
-//                (--refinement-only adds 1 and 2 steps at 4.8 and 6.4 px per cell);
+//   refinement   per-pixel terrain refinement: none (the defaults until 2026-11-28), 2 and 3
+//                steps at the default grid; 512^2 unrefined (the benchmark's baseline until
+//                then); 2 steps and none at 128^2 (--refinement-only adds 1 and 2 steps at
+//                4.8 and 6.4 px per cell);
 //   naive        vtkTexturedSphereSource (256 x 128) and global lon/lat meshes warped by the
 //                composed heights (double points), VTK's perspective depth, with the clipping
 //                range the policy gives the globe there (VTK's own range, fitted to the body,
@@ -51,8 +51,8 @@
 //     data(lon, lat)|. "missing": E exists but nothing (or another surface) is drawn;
 //     "extra": terrain drawn where the exact ray meets none. p95_all_px counts missing and extra
 //     samples as infinitely wrong (null when they exceed 5 %).
-//   registration_px: a 256^2 marker colour layer whose red and green are its own texel column
-//     and row is placed (top, unlit, effects off) on a patch around the view centre with texels
+//   registration_px: a 256^2 marker colour layer (nearest, so read at level 0) whose red and
+//     green are its own texel column and row is placed (top, unlit, effects off) on a patch around the view centre with texels
 //     a third of a pixel; the colour drawn decodes the (lon, lat) the composition sampled, and
 //     its surface point is projected against the exact hit's pixel. Quantization floor ~0.17 px.
 //   jitter_px: the same samples rendered again with the camera turned by 0.25 px (exact hits
@@ -841,10 +841,10 @@ std::vector<Setting> Benchmark::Settings()
   {
     list.push_back({ "grid", std::to_string(grid) + "^2", [m, grid] { m->SetGridResolution(grid); } });
   }
-  // The automatic grid at twice the default density (the default's before 2026-11-28).
+  // The automatic grid at half the default density: the refinement's faster candidate.
   if (!this->Opt.EffectsOnly && !this->Opt.GridOnly)
   {
-    list.push_back({ "grid", "automatic (1.6 px per cell)", [m] { m->SetGridPixelsPerCell(1.6); } });
+    list.push_back({ "grid", "automatic (3.2 px per cell)", [m] { m->SetGridPixelsPerCell(3.2); } });
   }
   const int side = std::max(this->Opt.Window.X, this->Opt.Window.Y);
   for (double f : this->Opt.GridFactors)
@@ -880,15 +880,12 @@ std::vector<Setting> Benchmark::Settings()
       {
         continue;
       }
-      list.push_back({ "refinement", steps == 0 ? "none" : std::to_string(steps) + " steps",
+      list.push_back({ "refinement",
+        steps == 0 ? "none (the defaults until 2026-11-28)" : std::to_string(steps) + " steps",
         [m, steps] { m->SetTerrainRefinement(steps); } });
     }
     if (!this->Opt.Quick)
     {
-      list.push_back({ "refinement", "none, 1.6 px per cell (the default until 2026-11-28)", [m] {
-                        m->SetGridPixelsPerCell(1.6);
-                        m->SetTerrainRefinement(0);
-                      } });
       list.push_back({ "refinement", "none, grid 512^2 (the baseline until 2026-11-28)", [m] {
                         m->SetGridResolution(512);
                         m->SetTerrainRefinement(0);
@@ -1668,6 +1665,10 @@ void MakeMarker(SceneDef& scene, const Reference& ref, vtkGlobeEllipsoid* body, 
   marker->SetColorData(256, 256, 4, rgba.data(), scene.Marker[0], scene.Marker[1],
     scene.Marker[2], scene.Marker[3]);
   marker->SetFeatherWidth(0.0);
+  // Its colours are codes, read at level 0: filtered to a grazing footprint (the default for
+  // linear layers since 2026-11) they would average texels along the footprint's long axis
+  // (Everest: 3.7 px p95) and measure the filter instead of where the composition samples.
+  marker->SetInterpolationToNearest();
   marker->SetDrawOrder(1000);
   marker->SetName("registration marker");
 }

@@ -133,12 +133,12 @@ int TestGlobeGridPass(int, char*[])
   }
   std::printf("%s\n", ok ? "GPU grid matches the double reference" : "FAILED");
 
-  // By default the grid follows the viewport (ceil(larger side / 3.2) points per side); a
+  // By default the grid follows the viewport (ceil(larger side / 1.6) points per side); a
   // fixed resolution stays fixed whatever the window; SetGridPixelsPerCell follows it again.
   {
     vtkNew<vtkGlobeMapper> automatic;
     automatic->SetEllipsoid(wgs84);
-    const bool defaults = automatic->GetGridPixelsPerCell() == 3.2 &&
+    const bool defaults = automatic->GetGridPixelsPerCell() == 1.6 &&
       automatic->GetGridResolution() == 512 && automatic->GetTerrainRefinement() == 1;
     std::printf("default: %g pixels per cell, %d before the first frame, %d refinement step\n",
       automatic->GetGridPixelsPerCell(), automatic->GetGridResolution(),
@@ -162,10 +162,10 @@ int TestGlobeGridPass(int, char*[])
         automatic->GetGridResolution(), expected, good ? "" : " FAILED");
       ok &= good;
     };
-    frame(400, 300, 125, "following the window");
-    frame(800, 600, 250, "following the window");
-    frame(1600, 1200, 500, "following the window");
-    frame(300, 500, 157, "following the window (portrait)");
+    frame(400, 300, 250, "following the window");
+    frame(800, 600, 500, "following the window");
+    frame(1600, 1200, 1000, "following the window");
+    frame(300, 500, 313, "following the window (portrait)");
     frame(2, 2, 2, "following the window (clamped)");
     automatic->SetGridResolution(128);
     frame(640, 480, 128, "fixed");
