@@ -30,6 +30,34 @@ struct Frame
 };
 
 /// Pixels of a pure colour (each channel 0 or 255 as given, within 40 of it).
+/// One vertex at the origin: each object's points are relative to its actor's position (a
+/// double matrix), since points stored as floats 6,900 km from the body's centre would be
+/// rounded by up to 0.5 m.
+vtkSmartPointer<vtkPolyData> Vertex()
+{
+  vtkNew<vtkPoints> p;
+  p->InsertNextPoint(0.0, 0.0, 0.0);
+  vtkNew<vtkCellArray> v;
+  vtkIdType id = 0;
+  v->InsertNextCell(1, &id);
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->SetPoints(p);
+  data->SetVerts(v);
+  return data;
+}
+
+/// The actor of a mapper at a position, in one flat colour.
+vtkSmartPointer<vtkActor> FlatAt(vtkMapper* mapper, const double position[3], double r, double g, double b)
+{
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->SetPosition(position[0], position[1], position[2]);
+  actor->GetProperty()->SetColor(r, g, b);
+  actor->GetProperty()->SetAmbient(1);
+  actor->GetProperty()->SetDiffuse(0);
+  return actor;
+}
+
 int Count(const Frame& f, int r, int g, int b)
 {
   int n = 0;
@@ -72,51 +100,18 @@ int TestGlobeDepthActors(int, char*[])
   const double radius = 4.0;
   double sphereCentre[3];
   ahead(100.0, -18.0, 8.0, sphereCentre);
-  // Each object's points are relative to its actor's position (a double matrix): points stored
-  // as floats 6,900 km from the body's centre would be rounded by up to 0.5 m.
-  vtkNew<vtkPolyData> spherePoint;
-  {
-    vtkNew<vtkPoints> p;
-    p->InsertNextPoint(0.0, 0.0, 0.0);
-    vtkNew<vtkCellArray> v;
-    vtkIdType id = 0;
-    v->InsertNextCell(1, &id);
-    spherePoint->SetPoints(p);
-    spherePoint->SetVerts(v);
-  }
   vtkNew<vtkOpenGLSphereMapper> impostorMapper;
-  impostorMapper->SetInputData(spherePoint);
+  impostorMapper->SetInputData(Vertex());
   impostorMapper->SetRadius(radius);
   impostorMapper->ScalarVisibilityOff();
-  vtkNew<vtkActor> impostor;
-  impostor->SetMapper(impostorMapper);
-  impostor->SetPosition(sphereCentre);
-  impostor->GetProperty()->SetColor(1, 0, 0);
-  impostor->GetProperty()->SetAmbient(1);
-  impostor->GetProperty()->SetDiffuse(0);
-  scene.Renderer->AddActor(impostor);
+  scene.Renderer->AddActor(FlatAt(impostorMapper, sphereCentre, 1, 0, 0));
 
   // Green: a point drawn as a sphere, 30 px, 100 m ahead, to the right.
   double pointCentre[3];
   ahead(100.0, 18.0, 8.0, pointCentre);
-  vtkNew<vtkPolyData> point;
-  {
-    vtkNew<vtkPoints> p;
-    p->InsertNextPoint(0.0, 0.0, 0.0);
-    vtkNew<vtkCellArray> v;
-    vtkIdType id = 0;
-    v->InsertNextCell(1, &id);
-    point->SetPoints(p);
-    point->SetVerts(v);
-  }
   vtkNew<vtkPolyDataMapper> pointMapper;
-  pointMapper->SetInputData(point);
-  vtkNew<vtkActor> pointActor;
-  pointActor->SetMapper(pointMapper);
-  pointActor->SetPosition(pointCentre);
-  pointActor->GetProperty()->SetColor(0, 1, 0);
-  pointActor->GetProperty()->SetAmbient(1);
-  pointActor->GetProperty()->SetDiffuse(0);
+  pointMapper->SetInputData(Vertex());
+  vtkSmartPointer<vtkActor> pointActor = FlatAt(pointMapper, pointCentre, 0, 1, 0);
   pointActor->GetProperty()->SetPointSize(30);
   pointActor->GetProperty()->RenderPointsAsSpheresOn();
   scene.Renderer->AddActor(pointActor);
@@ -144,12 +139,7 @@ int TestGlobeDepthActors(int, char*[])
   vtkNew<vtkPolyDataMapper> planeMapper;
   planeMapper->SetInputConnection(plane->GetOutputPort());
   planeMapper->ScalarVisibilityOff();
-  vtkNew<vtkActor> planeActor;
-  planeActor->SetMapper(planeMapper);
-  planeActor->SetPosition(planeOrigin);
-  planeActor->GetProperty()->SetColor(0, 0, 1);
-  planeActor->GetProperty()->SetAmbient(1);
-  planeActor->GetProperty()->SetDiffuse(0);
+  vtkSmartPointer<vtkActor> planeActor = FlatAt(planeMapper, planeOrigin, 0, 0, 1);
   planeActor->GetProperty()->EdgeVisibilityOn();
   planeActor->GetProperty()->SetEdgeColor(1, 1, 0);
   planeActor->GetProperty()->SetLineWidth(1);
