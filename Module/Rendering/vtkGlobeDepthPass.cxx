@@ -38,12 +38,20 @@ bool Insert(std::string& source, const std::string& declarations, const std::str
   return true;
 }
 
-/// Inserts text after (or before) every occurrence of a pattern; how many there were.
+/// Inserts text after (or before) every occurrence of a pattern that is not in a // comment;
+/// how many there were.
 int InsertAt(std::string& source, const std::string& pattern, const std::string& text, bool after)
 {
   int count = 0;
   for (size_t at = source.find(pattern); at != std::string::npos; at = source.find(pattern, at))
   {
+    const size_t line = source.rfind('\n', at);
+    const size_t comment = source.find("//", line == std::string::npos ? 0 : line);
+    if (comment < at)
+    {
+      at += pattern.size();
+      continue;
+    }
     const size_t where = after ? at + pattern.size() : at;
     source.insert(where, text);
     at = where + text.size() + (after ? 0 : pattern.size());
@@ -67,10 +75,10 @@ bool InjectLogarithmic(std::string& vs, std::string& gs, std::string& fs)
   const std::string clip = "  // vtkGlobeDepthPass (logarithmic): near plane at 1 mm\n"
                            "  gl_Position.z = gl_Position.w * vtkGlobeDepthClip.x + vtkGlobeDepthClip.y;\n";
   bool positions = false;
-  if (gs.find("EmitVertex") != std::string::npos && gs.find("void main") != std::string::npos)
+  const size_t gsMain = gs.find("void main");
+  if (gsMain != std::string::npos && InsertAt(gs, "EmitVertex();", clip, false) > 0)
   {
-    InsertAt(gs, "EmitVertex", clip, false);
-    gs.insert(gs.find("void main"), clipDeclaration);
+    gs.insert(gsMain, clipDeclaration);
     positions = true;
   }
   else

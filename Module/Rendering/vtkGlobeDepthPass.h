@@ -14,8 +14,8 @@
  * near plane. Depths a mapper writes itself keep their meaning: impostor spheres and sticks
  * (vtkOpenGLSphereMapper, vtkOpenGLStickMapper) and points or lines drawn as spheres or tubes
  * get the logarithmic depth of their surface, and VTK's coincident-topology offset (edges over
- * surfaces, lines, points) stays the same offset of the depth range. The relative resolution is then
- * constant: dw / (1 + w) = ln 2 * log2(1 + far) / 2^24 (about 1e-6 for far = 1e7 m).
+ * surfaces, lines, points) stays the same offset of the depth range. The relative resolution
+ * is then constant: dw / (1 + w) = ln 2 * log2(1 + far) / 2^24 (about 1e-6 for far = 1e7 m).
  *
  * @code
  *   vtkNew<vtkGlobeDepthPass> depth;      // delegates to a vtkRenderStepsPass

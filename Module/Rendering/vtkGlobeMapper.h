@@ -216,7 +216,9 @@ public:
    * the ray meets the rasterized mesh to where it meets the heights composed at the pixel's
    * footprint; the pixel's layers are composed there and its depth is written there. It
    * removes what the mesh adds to the error: the sag of flat triangles on the curved body and
-   * the heights between grid points, so the terrain's error no longer depends on the grid.
+   * the heights between grid points, so from the air the terrain's error no longer depends on
+   * the grid (along the ground it still does where the grid cuts off a ridge's top: the steps
+   * start behind it).
    * Each step composes the height layers once more per pixel. Default 1 (more accurate than
    * the mesh alone in every benchmark scene, for about a quarter more frame time on llvmpipe:
    * Documentation/accuracy-vs-time.md). 0 (off) leaves the rasterized surface as it is.
