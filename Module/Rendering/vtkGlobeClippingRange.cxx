@@ -15,8 +15,10 @@
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLSphereMapper.h"
 #include "vtkProp.h"
 #include "vtkPropCollection.h"
+#include "vtkProperty.h"
 #include "vtkRenderer.h"
 
 #include <algorithm>
@@ -412,6 +414,32 @@ bool vtkGlobeClippingRange::ComputeRange(vtkRenderer* renderer, double range[2])
       const double z = (p[0] - eye[0]) * view[0] + (p[1] - eye[1]) * view[1] + (p[2] - eye[2]) * view[2];
       lo = std::min(lo, z);
       hi = std::max(hi, z);
+    }
+    // What the bounds leave out: an impostor sphere's radius (vtkOpenGLSphereMapper's Radius;
+    // not a scale array's), and points or lines drawn as spheres or tubes, whose size is in
+    // pixels: half of it at a pixel's size per metre of eye distance.
+    if (actor)
+    {
+      double radius = 0.0, pixels = 0.0;
+      if (auto* spheres = vtkOpenGLSphereMapper::SafeDownCast(actor->GetMapper()))
+      {
+        radius = spheres->GetRadius();
+      }
+      vtkProperty* property = actor->GetProperty();
+      if (property->GetRenderPointsAsSpheres())
+      {
+        pixels = property->GetPointSize();
+      }
+      if (property->GetRenderLinesAsTubes())
+      {
+        pixels = std::max(pixels, static_cast<double>(property->GetLineWidth()));
+      }
+      const int* size = renderer->GetSize();
+      const double across = camera->GetUseHorizontalViewAngle() ? size[0] : size[1];
+      const double perMetre = 0.5 * pixels * 2.0 *
+        std::tan(vtkMath::RadiansFromDegrees(0.5 * camera->GetViewAngle())) / std::max(across, 1.0);
+      lo -= radius + perMetre * std::abs(lo);
+      hi += radius + perMetre * std::abs(hi);
     }
     if (hi > 0.0)
     {

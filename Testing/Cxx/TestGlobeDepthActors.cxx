@@ -4,13 +4,14 @@
 // writes the sphere's depth), points drawn as spheres (vtkProperty::RenderPointsAsSpheres:
 // depth moved to the sphere's surface in the fragment shader), and a surface with its edges
 // (VTK's coincident-topology offset, written into gl_FragDepth). Each is drawn in Default and
-// in Logarithmic mode next to the globe, and per mode:
+// in Logarithmic mode next to the globe, with the clipping policy's range, and per mode:
 //  - the pixels it covers: Logarithmic must draw the same as Default (within 1 %);
 //  - the eye distance its depth gives at the object's centre pixel (the mode's depth turned
 //    back into a distance, vtkGlobeDepthPass::GetViewDistance): the same in both modes, within
 //    the modes' resolution, and for the impostor sphere the exact ray/sphere hit (double);
 //  - the edges over their surface: Logarithmic keeps VTK's offset, so they show as in Default.
 #include "vtkCellArray.h"
+#include "vtkGlobeClippingRange.h"
 #include "vtkGlobeDepthPass.h"
 #include "vtkGlobeRenderingTestHelpers.h"
 #include "vtkGlobeTestHelpers.h"
@@ -147,10 +148,12 @@ int TestGlobeDepthActors(int, char*[])
 
   vtkNew<vtkGlobeDepthPass> depthPass;
   scene.Renderer->SetPass(depthPass);
-  // A range that holds every object's surface (the clipping policy reads props' bounds, which
-  // for points as spheres leave out their size), fine enough for Default mode to resolve
-  // 1e-4 m at 100 m.
-  cam->SetClippingRange(10.0, 1.0e6);
+  // The clipping policy's range: it must hold the spheres' surfaces, which their bounds (a
+  // point each) leave out.
+  vtkGlobeClippingRange::Install(scene.Renderer);
+  scene.Renderer->ResetCameraClippingRange();
+  const double nearPlane = cam->GetClippingRange()[0];
+  std::printf("clipping range [%.3f, %.1f] m\n", nearPlane, cam->GetClippingRange()[1]);
 
   // The pixel (x, y) where a world point projects, and the eye distance along the view axis
   // that the depth there gives in the current mode.
@@ -221,6 +224,8 @@ int TestGlobeDepthActors(int, char*[])
     "the point sphere covers what it covers in Default mode");
   checks.Expect(std::abs(pointW[1] - pointW[0]) <= 0.01 && pointW[0] < 100.0 - 1.0,
     "its depth is its surface's, as in Default mode (within 1 cm)");
+  checks.Expect(nearPlane < exact && nearPlane < pointW[1],
+    "the clipping policy's near plane is in front of both spheres' surfaces");
   checks.Expect(yellow[0] > 200 && yellow[1] >= 0.95 * yellow[0],
     "the plane's edges show over it as in Default mode (VTK's coincident offset kept)");
   return checks.Result();
