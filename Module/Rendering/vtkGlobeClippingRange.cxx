@@ -436,7 +436,8 @@ bool vtkGlobeClippingRange::ComputeRange(vtkRenderer* renderer, double range[2])
       }
       const int* size = renderer->GetSize();
       const double across = camera->GetUseHorizontalViewAngle() ? size[0] : size[1];
-      const double perMetre = 0.5 * pixels * 2.0 *
+      // A pixel spans 2 tan(angle / 2) / across metres per metre of eye distance.
+      const double perMetre = pixels *
         std::tan(vtkMath::RadiansFromDegrees(0.5 * camera->GetViewAngle())) / std::max(across, 1.0);
       lo -= radius + perMetre * std::abs(lo);
       hi += radius + perMetre * std::abs(hi);

@@ -52,8 +52,8 @@
 //     "extra": terrain drawn where the exact ray meets none. p95_all_px counts missing and extra
 //     samples as infinitely wrong (null when they exceed 5 %).
 //   registration_px: a 256^2 marker colour layer (nearest, so read at level 0) whose red and
-//     green are its own texel column and row is placed (top, unlit, effects off) on a patch around the view centre with texels
-//     a third of a pixel; the colour drawn decodes the (lon, lat) the composition sampled, and
+//     green are its own texel column and row is placed (top, unlit, effects off) on a patch
+//     around the view centre with texels a third of a pixel; the colour drawn decodes the (lon, lat) the composition sampled, and
 //     its surface point is projected against the exact hit's pixel. Quantization floor ~0.17 px.
 //   jitter_px: the same samples rendered again with the camera turned by 0.25 px (exact hits
 //     cast again): how much the on-screen error vector of each sample (error_px, as a vector)
@@ -704,6 +704,7 @@ private:
 
   Options Opt;
   vtkGlobeTest::Scene Scene; // the one window, renderer and PGM globe every candidate uses
+  vtkNew<vtkGlobeMapper> Defaults; // a mapper as constructed, never rendered: the defaults
   vtkNew<vtkGlobeDepthPass> DepthPass;
   vtkNew<vtkRenderer> PlainRenderer; // shares the camera: VTK's own clipping range
   bool Policy = true;                // the clipping policy (else VTK's plain range)
@@ -791,8 +792,7 @@ void Benchmark::Prepare()
 void Benchmark::ResetDefaults()
 {
   vtkGlobeMapper* m = this->Scene.Mapper;
-  vtkNew<vtkGlobeMapper> fresh;
-  m->SetGridPixelsPerCell(fresh->GetGridPixelsPerCell());
+  m->SetGridPixelsPerCell(this->Defaults->GetGridPixelsPerCell());
   this->DepthPass->SetModeToDefault();
   this->Policy = true;
   m->SetLighting(true);
@@ -812,8 +812,8 @@ void Benchmark::ResetDefaults()
       layer->SetInterpolationToLinear();
     }
   }
-  this->Scene.Mapper->SetHighPrecisionGeodetic(fresh->GetHighPrecisionGeodetic());
-  this->Scene.Mapper->SetTerrainRefinement(fresh->GetTerrainRefinement());
+  this->Scene.Mapper->SetHighPrecisionGeodetic(this->Defaults->GetHighPrecisionGeodetic());
+  this->Scene.Mapper->SetTerrainRefinement(this->Defaults->GetTerrainRefinement());
 }
 
 /**
@@ -825,11 +825,10 @@ std::vector<Setting> Benchmark::Settings()
   vtkGlobeMapper* m = this->Scene.Mapper;
   std::vector<Setting> list;
   {
-    vtkNew<vtkGlobeMapper> fresh;
+    const int steps = this->Defaults->GetTerrainRefinement();
     char name[96];
     std::snprintf(name, sizeof(name), "defaults (%.1f px per cell, %d refinement step%s)",
-      fresh->GetGridPixelsPerCell(), fresh->GetTerrainRefinement(),
-      fresh->GetTerrainRefinement() == 1 ? "" : "s");
+      this->Defaults->GetGridPixelsPerCell(), steps, steps == 1 ? "" : "s");
     list.push_back({ "baseline", name, [] {} });
   }
   if (this->Opt.EffectsOnly)
@@ -902,7 +901,7 @@ std::vector<Setting> Benchmark::Settings()
     if (this->Opt.RefinementOnly)
     {
       // Coarser automatic grids (the cells scale with the window), refined: what lies beyond
-      // the default's 3.2 px per cell.
+      // the grid family's 3.2 px per cell.
       for (double pixels : { 4.8, 6.4 })
       {
         for (int steps : { 1, 2 })
@@ -2177,8 +2176,9 @@ void Usage(const char* program)
     "  --effects-only  only the baseline and the effects, at the whole Earth, 1024x768\n"
     "  --grid-only     only the baseline (the automatic grid), a fixed 512^2 and the textured\n"
     "                  sphere, without the matrix (with --window: the automatic grid's rows)\n"
-    "  --refinement-only  only the baseline, the automatic grid and the terrain refinement\n"
-    "                  rows, without naive globes or the matrix\n"
+    "  --refinement-only  only the baseline and the terrain refinement rows (with coarser\n"
+    "                  automatic grids, 4.8 and 6.4 px per cell), without naive globes or\n"
+    "                  the matrix\n"
     "  --scene NAME    only this scene (repeatable)\n"
     "  --window WxH    the scenes' window (default 800x600)\n"
     "  --no-matrix     skip the grid x window matrix\n"
