@@ -375,12 +375,51 @@ public:
         inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
           inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
       }
+      if (inInfo)
+      {
+        this->RequestTime(inInfo);
+      }
       return 1;
     }
     return this->Superclass::ProcessRequest(request, inputVector, outputVector);
   }
 
+  /// The layer's UpdateTime, asked of a time-varying input.
+  double UpdateTime = 0.0;
+
 protected:
+  /**
+   * Asks a time-varying input for the time step UpdateTime falls in: the step's own time (the
+   * last step at or before it, the first before them all), so that every time within one step
+   * finds the input's data up to date (its DATA_TIME_STEP) and reads nothing; an input with a
+   * continuous TIME_RANGE gets UpdateTime clamped into it.
+   */
+  void RequestTime(vtkInformation* inInfo)
+  {
+    using SDDP = vtkStreamingDemandDrivenPipeline;
+    if (inInfo->Has(SDDP::TIME_STEPS()) && inInfo->Length(SDDP::TIME_STEPS()) > 0)
+    {
+      const double* steps = inInfo->Get(SDDP::TIME_STEPS());
+      const int n = inInfo->Length(SDDP::TIME_STEPS());
+      int k = 0;
+      while (k + 1 < n && steps[k + 1] <= this->UpdateTime)
+      {
+        ++k;
+      }
+      inInfo->Set(SDDP::UPDATE_TIME_STEP(), steps[k]);
+    }
+    else if (inInfo->Has(SDDP::TIME_RANGE()) && inInfo->Length(SDDP::TIME_RANGE()) == 2)
+    {
+      const double* range = inInfo->Get(SDDP::TIME_RANGE());
+      inInfo->Set(SDDP::UPDATE_TIME_STEP(),
+        std::max(range[0], std::min(range[1], this->UpdateTime)));
+    }
+    else
+    {
+      inInfo->Remove(SDDP::UPDATE_TIME_STEP());
+    }
+  }
+
   vtkGlobeLayerInput()
   {
     this->SetNumberOfInputPorts(1);
@@ -1042,6 +1081,7 @@ void vtkGlobeLayer::Invalidate()
 {
   vtkInternals& in = *this->Internals;
   this->Valid = false;
+  this->DataTime = std::numeric_limits<double>::quiet_NaN();
   in.Data = nullptr;
   in.Levels.clear();
   in.LevelsOf = nullptr;
@@ -1204,6 +1244,7 @@ bool vtkGlobeLayer::Update()
   // Bring the input up to date: upstream algorithms re-execute only when they, or what they
   // depend on, were modified since they last ran.
   in.Sink->Modified();
+  in.Sink->UpdateTime = this->UpdateTime;
   auto* executive = vtkStreamingDemandDrivenPipeline::SafeDownCast(in.Sink->GetExecutive());
   bool updated = false;
   try
@@ -1249,6 +1290,10 @@ bool vtkGlobeLayer::Update()
   }
   this->Valid = true;
   in.LastLoad = now;
+  vtkInformation* dataInfo = input ? input->GetInformation() : nullptr;
+  this->DataTime = dataInfo && dataInfo->Has(vtkDataObject::DATA_TIME_STEP())
+    ? dataInfo->Get(vtkDataObject::DATA_TIME_STEP())
+    : std::numeric_limits<double>::quiet_NaN();
   this->ValuesTime = in.Data ? in.Data->GetMTime() : 0;
   this->RescaledTime = 0;
   // After the run: an algorithm may modify itself while it executes (its error code).
@@ -2165,6 +2210,8 @@ void vtkGlobeLayer::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "Valid: " << (this->Valid ? "yes" : "no") << "\n";
   os << indent << "NumberOfLoads: " << this->NumberOfLoads << "\n";
+  os << indent << "UpdateTime: " << this->UpdateTime << "\n";
+  os << indent << "DataTime: " << this->DataTime << "\n";
   if (!this->Valid)
   {
     return;

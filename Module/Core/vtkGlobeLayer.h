@@ -55,6 +55,7 @@
 #include "vtkObject.h"
 #include "vtkWrappingHints.h" // for VTK_SIZEHINT
 
+#include <limits> // for std::numeric_limits
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 #include <utility> // for std::pair
@@ -312,6 +313,23 @@ public:
   void SetInputData(vtkDataObject* image);
   vtkAlgorithmOutput* GetInputConnection();
   vtkAlgorithm* GetInputAlgorithm();
+  ///@}
+
+  ///@{
+  /**
+   * The time the layer shows of a time-varying input: a vtkGlobeRasterReader given a series of
+   * files (AddFileName), or any algorithm that announces TIME_STEPS or a TIME_RANGE. Update()
+   * asks the input for the time step UpdateTime falls in (the last step at or before it; the
+   * first for an earlier time) by that step's own time, so a new UpdateTime within the same
+   * step reads and uploads nothing, and one in another step reads that step's file and
+   * re-uploads this layer alone. Default 0. An input without time ignores it.
+   * Documentation/pipelines.md, "Time".
+   */
+  vtkSetMacro(UpdateTime, double);
+  vtkGetMacro(UpdateTime, double);
+  /// The time of the loaded data (its DATA_TIME_STEP: the step's time); NaN when the input
+  /// has none, or nothing is loaded.
+  vtkGetMacro(DataTime, double);
   ///@}
 
   ///@{
@@ -644,6 +662,8 @@ protected:
   int Interpolation = Linear;
   int Streaming = StreamingAuto;
   int StreamingThreshold = 8192;
+  double UpdateTime = 0.0;
+  double DataTime = std::numeric_limits<double>::quiet_NaN();
 
   // The raster's size on the ground at its centre (m, east-west and north-south).
   bool GetGroundSize(double size[2]);

@@ -1332,6 +1332,105 @@ public:
   double NoData = 0.0;
   bool StripsChecked = false; // CheckStoredStrips passed since RequestInformation
   std::string LastError;
+  std::string Reading;            // the file the last header or pixel read was about
+  bool InformationFailed = false; // the last RequestInformation failed
+
+  /// A time series (AddFileName): the files as given, and as time steps.
+  struct Step
+  {
+    std::string File;
+    double Time = 0.0;
+    bool Timed = false; // given with a time
+  };
+  std::vector<Step> Series;
+  std::vector<Step> Steps; // Series in time order, each with its time (RequestInformation)
+
+  /// Sets Steps from Series; the reason when the times cannot be time steps, else "".
+  std::string OrderSteps()
+  {
+    this->Steps = this->Series;
+    const auto timed = std::count_if(
+      this->Steps.begin(), this->Steps.end(), [](const Step& step) { return step.Timed; });
+    if (timed == 0)
+    {
+      for (size_t i = 0; i < this->Steps.size(); ++i)
+      {
+        this->Steps[i].Time = static_cast<double>(i);
+      }
+      return "";
+    }
+    if (static_cast<size_t>(timed) != this->Steps.size())
+    {
+      return "the series gives times for " + std::to_string(timed) + " of its " +
+        std::to_string(this->Steps.size()) + " files: give every file a time, or none";
+    }
+    std::stable_sort(this->Steps.begin(), this->Steps.end(),
+      [](const Step& a, const Step& b) { return a.Time < b.Time; });
+    for (size_t i = 0; i < this->Steps.size(); ++i)
+    {
+      if (!std::isfinite(this->Steps[i].Time))
+      {
+        return "the time of '" + this->Steps[i].File + "' is not a finite number";
+      }
+      if (i > 0 && this->Steps[i].Time == this->Steps[i - 1].Time)
+      {
+        std::ostringstream why;
+        why.precision(17);
+        why << "two files have the time " << this->Steps[i].Time << ": '"
+            << this->Steps[i - 1].File << "' and '" << this->Steps[i].File << "'";
+        return why.str();
+      }
+    }
+    return "";
+  }
+
+  /// What every file of a series must share: size, samples and georeferencing.
+  struct Grid
+  {
+    int Width = 0, Height = 0, Channels = 0, ScalarType = 0;
+    Georeference Geo;
+
+    /// How `other` differs from this grid, "" when it does not.
+    std::string Mismatch(const Grid& other) const
+    {
+      std::ostringstream why;
+      why.precision(17);
+      if (other.Width != this->Width || other.Height != this->Height ||
+        other.Channels != this->Channels || other.ScalarType != this->ScalarType)
+      {
+        why << other.Width << " x " << other.Height << " pixels of " << other.Channels << " "
+            << vtkImageScalarTypeNameMacro(other.ScalarType) << " sample(s), not " << this->Width
+            << " x " << this->Height << " of " << this->Channels << " "
+            << vtkImageScalarTypeNameMacro(this->ScalarType);
+      }
+      else if (other.Geo.ModelType != this->Geo.ModelType || other.Geo.EPSG != this->Geo.EPSG ||
+        other.Geo.CRS != this->Geo.CRS)
+      {
+        why << "its coordinate system is " << ModelTypeName(other.Geo.ModelType) << " EPSG:"
+            << other.Geo.EPSG << ", not " << ModelTypeName(this->Geo.ModelType) << " EPSG:"
+            << this->Geo.EPSG;
+      }
+      else if (!std::equal(other.Geo.T, other.Geo.T + 6, this->Geo.T))
+      {
+        why << "its north-west corner and pixel size are (" << other.Geo.T[0] << ", "
+            << other.Geo.T[3] << "), " << other.Geo.T[1] << " x " << -other.Geo.T[5] << ", not ("
+            << this->Geo.T[0] << ", " << this->Geo.T[3] << "), " << this->Geo.T[1] << " x "
+            << -this->Geo.T[5];
+      }
+      return why.str();
+    }
+  };
+  Grid SeriesGrid; // the first step's (RequestInformation)
+  Grid CurrentGrid() const
+  {
+    Grid grid;
+    grid.Width = this->Width;
+    grid.Height = this->Height;
+    grid.Channels = this->Channels;
+    grid.ScalarType = this->ScalarType;
+    grid.Geo = this->Geo;
+    return grid;
+  }
 };
 
 //------------------------------------------------------------------------------------------
@@ -1347,6 +1446,38 @@ vtkGlobeRasterReader::~vtkGlobeRasterReader()
   this->SetFileName(nullptr);
 }
 
+void vtkGlobeRasterReader::AddFileName(const char* fileName)
+{
+  this->Internals->Series.push_back({ fileName ? fileName : "", 0.0, false });
+  this->Modified();
+}
+
+void vtkGlobeRasterReader::AddFileName(const char* fileName, double time)
+{
+  this->Internals->Series.push_back({ fileName ? fileName : "", time, true });
+  this->Modified();
+}
+
+void vtkGlobeRasterReader::RemoveAllFileNames()
+{
+  if (!this->Internals->Series.empty())
+  {
+    this->Internals->Series.clear();
+    this->Modified();
+  }
+}
+
+int vtkGlobeRasterReader::GetNumberOfFileNames()
+{
+  return static_cast<int>(this->Internals->Series.size());
+}
+
+const char* vtkGlobeRasterReader::GetSeriesFileName(int i)
+{
+  const auto& series = this->Internals->Series;
+  return i >= 0 && i < static_cast<int>(series.size()) ? series[i].File.c_str() : nullptr;
+}
+
 const char* vtkGlobeRasterReader::GetLastError()
 {
   return this->Internals->LastError.c_str();
@@ -1357,39 +1488,16 @@ int vtkGlobeRasterReader::Fail(unsigned long errorCode, const std::string& why)
   this->Internals->LastError = why;
   this->Internals->File.clear(); // the header information is not valid
   this->SetErrorCode(errorCode);
-  vtkErrorMacro(<< "Cannot read '" << (this->FileName ? this->FileName : "") << "': " << why);
+  vtkErrorMacro(<< "Cannot read '" << this->Internals->Reading << "': " << why);
   return 0;
 }
 
 //------------------------------------------------------------------------------------------
-int vtkGlobeRasterReader::RequestInformation(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+int vtkGlobeRasterReader::ReadHeader(const std::string& file)
 {
   vtkInternals& in = *this->Internals;
-  in.LastError.clear();
   in.File.clear();
-  this->SetErrorCode(vtkErrorCode::NoError);
-  if (!this->FileName || !*this->FileName)
-  {
-    in.LastError = "no FileName is set";
-    this->SetErrorCode(vtkErrorCode::NoFileNameError);
-    vtkErrorMacro(<< "Cannot read: no FileName is set");
-    return 0;
-  }
-  const std::string file = this->FileName;
-  // On failure, no stale output from an earlier success stays downstream.
-  struct ClearOnFailure
-  {
-    vtkInternals& In;
-    vtkImageData* Output;
-    ~ClearOnFailure()
-    {
-      if (this->In.File.empty() && this->Output)
-      {
-        this->Output->Initialize();
-      }
-    }
-  } clear{ in, vtkImageData::GetData(outputVector) };
+  in.Reading = file;
   try
   {
     std::error_code ec;
@@ -1761,13 +1869,76 @@ int vtkGlobeRasterReader::RequestInformation(
     const bool memory = dynamic_cast<const std::bad_alloc*>(&e) != nullptr;
     return this->Fail(vtkErrorCode::UnknownError, memory ? "not enough memory" : e.what());
   }
+  return 1;
+}
 
+//------------------------------------------------------------------------------------------
+int vtkGlobeRasterReader::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInternals& in = *this->Internals;
+  in.LastError.clear();
+  in.File.clear();
+  in.InformationFailed = true;
+  this->SetErrorCode(vtkErrorCode::NoError);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+  outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+  const bool series = !in.Series.empty();
+  if (!series && (!this->FileName || !*this->FileName))
+  {
+    in.LastError = "no FileName is set";
+    this->SetErrorCode(vtkErrorCode::NoFileNameError);
+    vtkErrorMacro(<< "Cannot read: no FileName is set");
+    return 0;
+  }
+  // On failure, no stale output from an earlier success stays downstream.
+  struct ClearOnFailure
+  {
+    vtkInternals& In;
+    vtkImageData* Output;
+    ~ClearOnFailure()
+    {
+      if (this->In.File.empty() && this->Output)
+      {
+        this->Output->Initialize();
+      }
+    }
+  } clear{ in, vtkImageData::GetData(outputVector) };
+  if (series)
+  {
+    // The time values: the files' own, or their positions in the series.
+    const std::string why = in.OrderSteps();
+    if (!why.empty())
+    {
+      in.Reading = in.Series.front().File;
+      return this->Fail(vtkErrorCode::UserError, why);
+    }
+  }
+  // A series' grid is its first step's; every other file must match it (RequestData).
+  if (!this->ReadHeader(series ? in.Steps.front().File : std::string(this->FileName)))
+  {
+    return 0;
+  }
+  in.SeriesGrid = in.CurrentGrid();
+  in.InformationFailed = false;
+  if (in.Steps.size() > 1)
+  {
+    std::vector<double> times;
+    for (const auto& step : in.Steps)
+    {
+      times.push_back(step.Time);
+    }
+    const double range[2] = { times.front(), times.back() };
+    outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(),
+      static_cast<int>(times.size()));
+    outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+  }
   // VTK orientation: the origin is the centre of the south-west pixel, y grows north.
   const double* t = in.Geo.T;
   const int extent[6] = { 0, in.Width - 1, 0, in.Height - 1, 0, 0 };
   const double spacing[3] = { t[1], -t[5], 1.0 };
   const double origin[3] = { t[0] + 0.5 * t[1], t[3] + in.Height * t[5] - 0.5 * t[5], 0.0 };
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
   outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
   // RequestData reads any UPDATE_EXTENT (rows of the file only): the executive may split the
   // raster into pieces, one per MPI rank in pvbatch (Documentation/pipelines.md).
@@ -1789,15 +1960,49 @@ int vtkGlobeRasterReader::RequestData(
   {
     output->Initialize();
   }
-  if (in.File.empty() && !in.LastError.empty())
+  if (in.InformationFailed)
   {
     return 0; // the executive asks for data after a failed RequestInformation: said already
   }
   in.LastError.clear();
   this->SetErrorCode(vtkErrorCode::NoError);
-  if (!output || in.File.empty() || !this->FileName || in.File != this->FileName)
+  // The file of the requested time: the last step at or before it (the first before them all).
+  std::string wanted = this->FileName ? this->FileName : "";
+  double dataTime = 0.0;
+  const bool timed = in.Steps.size() > 1;
+  if (!in.Series.empty())
   {
+    size_t step = 0;
+    if (timed && outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+    {
+      const double time = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+      while (step + 1 < in.Steps.size() && in.Steps[step + 1].Time <= time)
+      {
+        ++step;
+      }
+    }
+    wanted = in.Steps[step].File;
+    dataTime = in.Steps[step].Time;
+  }
+  if (!output || wanted.empty())
+  {
+    in.Reading = wanted;
     return this->Fail(vtkErrorCode::UnknownError, "its header was not read (RequestInformation)");
+  }
+  if (in.File != wanted)
+  {
+    // Another file of the series: its header, which must describe the series' grid.
+    if (!this->ReadHeader(wanted))
+    {
+      return 0;
+    }
+    const std::string mismatch = in.SeriesGrid.Mismatch(in.CurrentGrid());
+    if (!mismatch.empty())
+    {
+      return this->Fail(vtkErrorCode::FileFormatError,
+        "it does not match the first step of its series ('" + in.Steps.front().File +
+          "'): " + mismatch);
+    }
   }
   const std::string file = in.File;
   int ue[6];
@@ -1809,6 +2014,11 @@ int vtkGlobeRasterReader::RequestData(
   ue[4] = ue[5] = 0;
   const double* t = in.Geo.T;
   output->Initialize();
+  if (timed)
+  {
+    // The step's own time, so that a request for it again finds the data up to date.
+    output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), dataTime);
+  }
   if (ue[0] > ue[1] || ue[2] > ue[3])
   {
     return 1; // an empty request
@@ -2011,6 +2221,16 @@ void vtkGlobeRasterReader::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   const vtkInternals& in = *this->Internals;
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "FileNames: " << in.Series.size() << (in.Series.empty() ? "\n" : ":\n");
+  for (const auto& step : in.Series)
+  {
+    os << indent.GetNextIndent() << step.File;
+    if (step.Timed)
+    {
+      os << " (time " << step.Time << ")";
+    }
+    os << "\n";
+  }
   os << indent << "EPSG: " << this->EPSG << "\n";
   os << indent << "MaximumMemory: " << this->MaximumMemory << " MiB\n";
   os << indent << "LastError: " << (in.LastError.empty() ? "(none)" : in.LastError) << "\n";

@@ -80,9 +80,30 @@ public:
   };
 
   ///@{
-  /// The raster file.
+  /// The raster file (ignored while a series is given with AddFileName).
   vtkSetStringMacro(FileName);
   vtkGetStringMacro(FileName);
+  ///@}
+
+  ///@{
+  /**
+   * A time series: one raster per time step (a folder of dated GeoTIFFs, say), read as one
+   * time-varying image. With two files or more the output information carries TIME_STEPS and
+   * TIME_RANGE, and RequestData reads the file of the requested UPDATE_TIME_STEP: the last step
+   * at or before it (the first step for an earlier time), stamping the output's DATA_TIME_STEP
+   * with that step's own time, so that any time within one step reads nothing again. Times are
+   * those given with the files (in any order; the steps are sorted by them, and two files may
+   * not share one), or the files' positions 0, 1, 2... when none is given; a series with times
+   * for only some files is refused. Every file must share the first step's size, samples and
+   * georeferencing: a file that does not is an error naming both files and the difference.
+   * While a series is given, FileName is ignored. Documentation/pipelines.md, "Time".
+   */
+  void AddFileName(const char* fileName);
+  void AddFileName(const char* fileName, double time);
+  void RemoveAllFileNames();
+  int GetNumberOfFileNames();
+  /// The i-th file as added (not sorted by time); nullptr out of range.
+  const char* GetSeriesFileName(int i);
   ///@}
 
   ///@{
@@ -146,6 +167,8 @@ private:
   void operator=(const vtkGlobeRasterReader&) = delete;
 
   int Fail(unsigned long errorCode, const std::string& why);
+  // Reads `file`'s header (no pixels) into the internals; 0, with the error said, on failure.
+  int ReadHeader(const std::string& file);
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

@@ -18,7 +18,8 @@ set(globe_rendering_tests
   TestGlobeRenderBadInput.cxx
   TestGlobeSharedDepth.cxx
   TestGlobeWholeEarth.cxx
-  TestGlobeLayerPipeline.cxx)
+  TestGlobeLayerPipeline.cxx
+  TestGlobeTimeSeries.cxx)
 # Depth for the whole scene: clipping policy, depth modes, picking.
 list(APPEND globe_rendering_tests
   TestGlobeClippingRange.cxx

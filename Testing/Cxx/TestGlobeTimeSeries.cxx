@@ -1,0 +1,271 @@
+// A time-varying layer through the pipeline (issue 15): a vtkGlobeRasterReader given a series
+// of three global images with their dates announces TIME_STEPS, and a colour vtkGlobeLayer fed
+// by it follows its UpdateTime.
+// - The reader: the steps in time order, the file of each requested time (the last step at or
+//   before it), DATA_TIME_STEP stamped with the step's time, nothing read again for the same
+//   time (VTK's executive re-runs a reader for any other requested time: the layer asks by the
+//   step's own time, below).
+// - The rendered globe: at every step the frame equals, pixel for pixel, a globe whose colour
+//   layer reads that step's file directly; the steps' frames differ from each other.
+// - Uploads: a change of step re-uploads that layer alone (the height layer stays), a time within
+//   the same step uploads and reads nothing.
+// - Bad series: times for some files only, two files at one time, a file whose grid differs from
+//   the first step's, a missing file: each an error naming the problem; the other steps and the
+//   rest of the scene still render.
+#include "vtkGlobeLayerSet.h"
+#include "vtkGlobeRasterReader.h"
+#include "vtkGlobeRenderingTestHelpers.h"
+#include "vtkGlobeTestHelpers.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
+#include "vtkTestErrorObserver.h"
+
+namespace
+{
+vtkGlobeTest::Checklist Checks;
+
+void Expect(bool condition, const std::string& what)
+{
+  Checks.Expect(condition, what);
+}
+
+const std::string Temp = VTKGLOBE_TEMP_DIR;
+// Decimal years, given to the reader out of order.
+const double Times[3] = { 2026.0, 2026.25, 2026.5 };
+
+/// A global w x h PNG with a world file (plate carree, WGS 84 degrees): step k's pattern.
+std::string WriteStep(const std::string& name, int k, int w = 64, int h = 32)
+{
+  const std::string base = Temp + "/" + name;
+  const std::string png = vtkGlobeTest::WriteWorldFilePNG(base, 4326, w, h, -180.0, 90.0,
+    360.0 / w, [k](int i, int j) {
+      return std::array<unsigned char, 3>{ static_cast<unsigned char>((i * 4 + 85 * k) % 256),
+        static_cast<unsigned char>((j * 8 + 40 * k) % 256),
+        static_cast<unsigned char>(60 + 70 * k) };
+    });
+  std::remove((base + ".prj").c_str()); // a world file in degrees: WGS 84
+  vtkGlobeTest::WriteGlobalWorldFile(base + ".pgw", w, h);
+  return png;
+}
+
+/// Counts a reader's executions (RequestData runs).
+struct ExecutionCounter
+{
+  int Count = 0;
+  vtkNew<vtkCallbackCommand> Command;
+  explicit ExecutionCounter(vtkAlgorithm* algorithm)
+  {
+    this->Command->SetClientData(this);
+    this->Command->SetCallback(
+      [](vtkObject*, unsigned long, void* self, void*) { ++static_cast<ExecutionCounter*>(self)->Count; });
+    algorithm->AddObserver(vtkCommand::EndEvent, this->Command);
+  }
+};
+
+/// The file and time of the reader's output after an update at `time`.
+void ReadAt(vtkGlobeRasterReader* reader, double time, std::string& file, double& dataTime)
+{
+  reader->UpdateTimeStep(time);
+  vtkDataObject* output = reader->GetOutputDataObject(0);
+  auto* names = vtkStringArray::SafeDownCast(
+    output->GetFieldData()->GetAbstractArray(vtkGlobeRasterReader::GetFileNameArrayName()));
+  file = names && names->GetNumberOfValues() > 0 ? names->GetValue(0) : "";
+  dataTime = output->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP())
+    ? output->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP())
+    : NAN;
+}
+
+/// The number of bytes that differ between two frames.
+int Differing(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)
+{
+  int n = a.size() == b.size() ? 0 : static_cast<int>(std::max(a.size(), b.size()));
+  for (size_t i = 0; i < std::min(a.size(), b.size()); ++i)
+  {
+    n += a[i] != b[i] ? 1 : 0;
+  }
+  return n;
+}
+
+bool Said(vtkTest::ErrorObserver* observer, const std::vector<std::string>& words)
+{
+  const std::string message = observer->GetError() ? observer->GetErrorMessage() : "";
+  bool all = !message.empty();
+  for (const auto& w : words)
+  {
+    all = all && message.find(w) != std::string::npos;
+  }
+  std::printf("    said: %s\n", message.empty() ? "(nothing)" : message.substr(message.find("Cannot")).c_str());
+  observer->Clear();
+  return all;
+}
+} // namespace
+
+int TestGlobeTimeSeries(int, char*[])
+{
+  const std::string steps[3] = { WriteStep("series_a", 0), WriteStep("series_b", 1),
+    WriteStep("series_c", 2) };
+
+  // The reader alone.
+  vtkNew<vtkGlobeRasterReader> reader;
+  reader->AddFileName(steps[2].c_str(), Times[2]);
+  reader->AddFileName(steps[0].c_str(), Times[0]);
+  reader->AddFileName(steps[1].c_str(), Times[1]);
+  ExecutionCounter executions(reader);
+  reader->UpdateInformation();
+  vtkInformation* info = reader->GetOutputInformation(0);
+  const int n = info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+  const double* t = info->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+  const double* range = info->Get(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+  Expect(n == 3 && t && t[0] == Times[0] && t[1] == Times[1] && t[2] == Times[2] && range &&
+      range[0] == Times[0] && range[1] == Times[2] && reader->GetNumberOfFileNames() == 3 &&
+      std::string(reader->GetSeriesFileName(0)) == steps[2],
+    vtkGlobeTest::Printf("TIME_STEPS in time order: %d steps (%.2f, %.2f, %.2f), range %.2f..%.2f",
+      n, n > 0 ? t[0] : NAN, n > 1 ? t[1] : NAN, n > 2 ? t[2] : NAN, range ? range[0] : NAN,
+      range ? range[1] : NAN));
+  struct Request
+  {
+    double Time;
+    int Step;
+  };
+  const Request requests[] = { { 2025.0, 0 }, { 2026.0, 0 }, { 2026.2, 0 }, { 2026.25, 1 },
+    { 2026.3, 1 }, { 2026.5, 2 }, { 2030.0, 2 } };
+  for (const auto& r : requests)
+  {
+    std::string file;
+    double dataTime = NAN;
+    ReadAt(reader, r.Time, file, dataTime);
+    Expect(file == steps[r.Step] && dataTime == Times[r.Step],
+      vtkGlobeTest::Printf("time %.2f reads step %d (%s, DATA_TIME_STEP %.2f)", r.Time, r.Step,
+        file.substr(file.rfind('/') + 1).c_str(), dataTime));
+  }
+  const int executed = executions.Count;
+  {
+    std::string file;
+    double dataTime = NAN;
+    ReadAt(reader, 2030.0, file, dataTime);
+  }
+  Expect(executions.Count == executed,
+    vtkGlobeTest::Printf("the same time again reads nothing (%d runs before, %d after)", executed,
+      executions.Count));
+
+  // A colour layer fed by the series, over static heights, against a globe reading each step's
+  // file directly.
+  vtkGlobeTest::Scene scene(240, 180);
+  scene.Mapper->AddLayer(vtkGlobeTest::FileLayer("earth/relief_2deg.tif", true));
+  vtkNew<vtkGlobeLayer> series;
+  series->SetRoleToColor();
+  series->SetInputConnection(reader->GetOutputPort());
+  scene.Mapper->AddLayer(series);
+  vtkGlobeLayer* heights = scene.Mapper->GetLayer(0);
+  vtkGlobeTest::Scene reference(240, 180);
+  reference.Mapper->AddLayer(vtkGlobeTest::FileLayer("earth/relief_2deg.tif", true));
+  vtkNew<vtkGlobeLayer> direct;
+  direct->SetRoleToColor();
+  reference.Mapper->AddLayer(direct);
+  const double camera[3] = { 20.0, 10.0, 2.0e7 }, target[3] = { 20.0, 10.0, 0.0 };
+  scene.Look(camera, target, 40.0);
+  reference.Look(camera, target, 40.0);
+  auto expected = [&](int step) {
+    direct->SetFileName(steps[step].c_str());
+    reference.Render();
+    return vtkGlobeTest::ReadPixels(reference.Window);
+  };
+  const std::vector<unsigned char> frames[3] = { expected(0), expected(1), expected(2) };
+  Expect(Differing(frames[0], frames[1]) > 10000 && Differing(frames[1], frames[2]) > 10000,
+    vtkGlobeTest::Printf("the steps' frames differ (%d and %d bytes)", Differing(frames[0], frames[1]),
+      Differing(frames[1], frames[2])));
+
+  vtkGlobeLayerSet* set = scene.Mapper->GetLayerSet();
+  series->SetUpdateTime(0.0); // before the first step: the first step
+  scene.Render();
+  int uploads = set->GetNumberOfUploads();
+  vtkMTimeType heightData = heights->GetData() ? heights->GetData()->GetMTime() : 0;
+  Expect(uploads == 2 && series->GetDataTime() == Times[0] &&
+      Differing(vtkGlobeTest::ReadPixels(scene.Window), frames[0]) == 0,
+    vtkGlobeTest::Printf("time 0: step 1 (data time %.2f), %d uploads, the frame is step 1's "
+                         "(%d bytes differ)",
+      series->GetDataTime(), uploads, Differing(vtkGlobeTest::ReadPixels(scene.Window), frames[0])));
+  struct Move
+  {
+    double Time;
+    int Step;
+    int Uploads; // of the series layer
+    int Reads;
+  };
+  const Move moves[] = { { 2026.3, 1, 1, 1 }, { 2026.4, 1, 0, 0 }, { 2026.25, 1, 0, 0 },
+    { 2031.0, 2, 1, 1 }, { 2026.1, 0, 1, 1 } };
+  for (const auto& m : moves)
+  {
+    const int loads = series->GetNumberOfLoads(), runs = executions.Count;
+    series->SetUpdateTime(m.Time);
+    scene.Render();
+    const int diff = Differing(vtkGlobeTest::ReadPixels(scene.Window), frames[m.Step]);
+    const int uploaded = set->GetNumberOfUploads() - uploads;
+    uploads = set->GetNumberOfUploads();
+    const bool heightsKept = heights->GetData() && heights->GetData()->GetMTime() == heightData;
+    Expect(diff == 0 && uploaded == m.Uploads && series->GetNumberOfLoads() - loads == m.Reads &&
+        executions.Count - runs == m.Reads && series->GetDataTime() == Times[m.Step] && heightsKept,
+      vtkGlobeTest::Printf("time %.2f: step %d, %d upload(s), %d read(s) by the reader, the "
+                           "frame is the step's (%d bytes differ), heights not reloaded",
+        m.Time, m.Step + 1, uploaded, executions.Count - runs, diff));
+  }
+
+  // Bad series.
+  vtkNew<vtkTest::ErrorObserver> errors;
+  {
+    vtkNew<vtkGlobeRasterReader> mixed;
+    mixed->AddObserver(vtkCommand::ErrorEvent, errors);
+    mixed->AddFileName(steps[0].c_str(), 1.0);
+    mixed->AddFileName(steps[1].c_str());
+    mixed->UpdateInformation();
+    Expect(Said(errors, { "times for 1 of its 2 files" }), "times for some files only: refused");
+    mixed->RemoveAllFileNames();
+    mixed->AddFileName(steps[0].c_str(), 1.0);
+    mixed->AddFileName(steps[1].c_str(), 1.0);
+    mixed->UpdateInformation();
+    Expect(Said(errors, { "two files have the time 1", "series_a", "series_b" }),
+      "two files at one time: refused, naming both");
+  }
+  const std::string coarse = WriteStep("series_coarse", 1, 32, 16);
+  const std::string missing = Temp + "/series_missing.png";
+  std::remove(missing.c_str());
+  vtkNew<vtkGlobeRasterReader> bad;
+  bad->AddObserver(vtkCommand::ErrorEvent, errors);
+  bad->AddFileName(steps[0].c_str());
+  bad->AddFileName(coarse.c_str());
+  bad->AddFileName(missing.c_str());
+  series->SetInputConnection(bad->GetOutputPort());
+  vtkNew<vtkTest::ErrorObserver> layerErrors;
+  series->AddObserver(vtkCommand::ErrorEvent, layerErrors);
+  heights->AddObserver(vtkCommand::ErrorEvent, layerErrors);
+  series->SetUpdateTime(0.0);
+  scene.Render();
+  Expect(series->IsValid() && series->GetDataTime() == 0.0 && !errors->GetError() &&
+      Differing(vtkGlobeTest::ReadPixels(scene.Window), frames[0]) == 0,
+    "a series without times: step 0 at time 0, the frame is the first file's");
+  series->SetUpdateTime(1.0);
+  scene.Render();
+  const bool coarseSaid = Said(errors, { "series_coarse", "does not match the first step", "series_a",
+                                          "32 x 16", "not 64 x 32" });
+  layerErrors->Clear();
+  Expect(coarseSaid && !series->IsValid() && heights->IsValid() &&
+      vtkGlobeTest::CoveredPixels(vtkGlobeTest::ReadDepth(scene.Window)) > 10000,
+    "a step whose grid differs: an error naming both files and the sizes; the layer is invalid, "
+    "the heights and the globe still render");
+  series->SetUpdateTime(2.0);
+  scene.Render();
+  Expect(Said(errors, { "series_missing", "does not exist" }) && !series->IsValid() &&
+      vtkGlobeTest::CoveredPixels(vtkGlobeTest::ReadDepth(scene.Window)) > 10000,
+    "a missing file: an error naming it; the globe still renders");
+  layerErrors->Clear();
+  series->SetUpdateTime(0.5);
+  scene.Render();
+  Expect(series->IsValid() && series->GetDataTime() == 0.0 &&
+      Differing(vtkGlobeTest::ReadPixels(scene.Window), frames[0]) == 0,
+    "back to step 0: valid again, the first file's frame");
+  return Checks.Result();
+}
