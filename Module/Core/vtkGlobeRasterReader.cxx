@@ -12,6 +12,7 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 
@@ -1344,6 +1345,12 @@ public:
   };
   std::vector<Step> Series;
   std::vector<Step> Steps; // Series in time order, each with its time (RequestInformation)
+  // A series' last read (sharing the output's arrays), given again for another time within
+  // the same step while the file, the extent and the reader's settings are the same.
+  vtkSmartPointer<vtkImageData> Kept;
+  std::string KeptFile;
+  int KeptExtent[6] = { 0, -1, 0, -1, 0, -1 };
+  vtkMTimeType KeptTime = 0;
 
   /// Sets Steps from Series; the reason when the times cannot be time steps, else "".
   std::string OrderSteps()
@@ -2023,6 +2030,16 @@ int vtkGlobeRasterReader::RequestData(
   {
     return 1; // an empty request
   }
+  if (timed && in.Kept && in.KeptFile == file && std::equal(ue, ue + 6, in.KeptExtent) &&
+    in.KeptTime == this->GetMTime())
+  {
+    // Another time within the step last read (VTK's executive asks again for any new time):
+    // the same arrays, nothing decoded.
+    output->ShallowCopy(in.Kept);
+    output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), dataTime);
+    return 1;
+  }
+  in.Kept = nullptr;
   try
   {
     // File rows [r0, r1) hold VTK rows ue[2]..ue[3].
@@ -2211,6 +2228,14 @@ int vtkGlobeRasterReader::RequestData(
     a->InsertNextValue(in.FlipColumns ? 1 : 0);
     a->InsertNextValue(in.FlipRows ? 0 : 1);
     fd->AddArray(a);
+  }
+  if (timed)
+  {
+    in.Kept = vtkSmartPointer<vtkImageData>::New();
+    in.Kept->ShallowCopy(output);
+    in.KeptFile = file;
+    std::copy(ue, ue + 6, in.KeptExtent);
+    in.KeptTime = this->GetMTime();
   }
   return 1;
 }

@@ -91,7 +91,8 @@ public:
    * time-varying image. With two files or more the output information carries TIME_STEPS and
    * TIME_RANGE, and RequestData reads the file of the requested UPDATE_TIME_STEP: the last step
    * at or before it (the first step for an earlier time), stamping the output's DATA_TIME_STEP
-   * with that step's own time, so that any time within one step reads nothing again. Times are
+   * with that step's own time. VTK's executive runs the reader again for any new time; within
+   * the step last read, it gives the same arrays again without decoding anything. Times are
    * those given with the files (in any order; the steps are sorted by them, and two files may
    * not share one), or the files' positions 0, 1, 2... when none is given; a series with times
    * for only some files is refused. Every file must share the first step's size, samples and

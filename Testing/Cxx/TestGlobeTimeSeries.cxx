@@ -3,8 +3,8 @@
 // by it follows its UpdateTime.
 // - The reader: the steps in time order, the file of each requested time (the last step at or
 //   before it), DATA_TIME_STEP stamped with the step's time, nothing read again for the same
-//   time (VTK's executive re-runs a reader for any other requested time: the layer asks by the
-//   step's own time, below).
+//   time; VTK's executive runs a reader again for any other time, and within the step last read
+//   the reader gives the same arrays again (the layer asks by the step's own time, below).
 // - The rendered globe: at every step the frame equals, pixel for pixel, a globe whose colour
 //   layer reads that step's file directly; the steps' frames differ from each other.
 // - Uploads: a change of step re-uploads that layer alone (the height layer stays), a time within
@@ -20,6 +20,7 @@
 #include "vtkCallbackCommand.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
+#include "vtkPointData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 #include "vtkTestErrorObserver.h"
@@ -151,6 +152,18 @@ int TestGlobeTimeSeries(int, char*[])
   Expect(executions.Count == executed,
     vtkGlobeTest::Printf("the same time again reads nothing (%d runs before, %d after)", executed,
       executions.Count));
+  {
+    vtkDataArray* before = reader->GetOutput()->GetPointData()->GetScalars();
+    const vtkMTimeType beforeTime = before ? before->GetMTime() : 0;
+    std::string file;
+    double dataTime = NAN;
+    ReadAt(reader, 2026.6, file, dataTime);
+    vtkDataArray* after = reader->GetOutput()->GetPointData()->GetScalars();
+    Expect(before && after == before && after->GetMTime() == beforeTime && file == steps[2] &&
+        dataTime == Times[2],
+      "another time within the step last read: the reader runs, but gives the same arrays "
+      "(nothing decoded)");
+  }
 
   // A colour layer fed by the series, over static heights, against a globe reading each step's
   // file directly.
