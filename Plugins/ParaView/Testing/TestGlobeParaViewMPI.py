@@ -12,11 +12,19 @@ script.
   and value ranges give TestGlobeParaViewReader's one-process numbers: extent 0..179 x 0..89,
   range -6526.54 .. 5211.51, and the points add up to 16,200 plus the boundary column the two
   pieces share.
+- The globe under IceT: the scene of TestGlobeParaViewRepresentation (globe_scene.py) rendered
+  by both ranks, whose yellow sphere and wavelet slice are distributed (each rank holds a part,
+  the parts add up), equals that test's 1-rank picture (globe-1rank.png) within VTK's
+  regression threshold, and matches the same baseline: IceT's depth compositing puts the other
+  ranks' geometry in front of and behind the globe as one process does.
 """
 import os
+import sys
 
-from mpi4py import MPI
-from paraview.simple import LoadPlugin
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from mpi4py import MPI  # noqa: E402
+from paraview.simple import LoadPlugin, SaveScreenshot  # noqa: E402
+import globe_scene  # noqa: E402
 from vtkmodules.vtkIOGDAL import vtkGDALRasterReader
 
 comm = MPI.COMM_WORLD
@@ -84,6 +92,28 @@ expect(tuple(union) == (0, 179, 0, 89, 0, 0) and points == 16200 + shared and
        abs(lo + 6526.538) < 1e-3 and abs(hi - 5211.506) < 1e-3,
        "reduced over the ranks: extent %s, %d points (16,200 and the shared column), range "
        "(%.3f, %.3f)" % (tuple(union), points, lo, hi))
+
+# The globe scene on 2 ranks, composited by IceT.
+scene = globe_scene.build(globals(), DATA)
+for name in ("limb", "slice"):
+    local = scene[name].GetDataInformation().GetNumberOfPoints()
+    points = comm.allgather(local)
+    expect(comm.size == 2 and all(0 < p < sum(points) for p in points),
+           "the %s is distributed: %s points on the ranks" % (name, points))
+OUTPUT = os.environ["VTKGLOBE_PARAVIEW_OUTPUT"]
+two = os.path.join(OUTPUT, "globe-2rank.png")
+SaveScreenshot(two, scene["view"], ImageResolution=globe_scene.SIZE)  # rank 0 writes it
+comm.Barrier()
+if comm.rank == 0:
+    one = os.path.join(OUTPUT, "globe-1rank.png")
+    baseline = os.path.join(os.path.dirname(os.path.abspath(__file__)), "Baseline",
+                            "TestGlobeParaViewRepresentation.png")
+    to_one = globe_scene.image_error(two, one) if os.path.exists(one) else float("inf")
+    to_baseline = globe_scene.image_error(two, baseline)
+    expect(to_one <= 0.15 and to_baseline <= 0.15,
+           "the 2-rank picture against the 1-rank one: error %.4f; against the baseline: %.4f "
+           "(threshold 0.15)" % (to_one, to_baseline))
+globe_scene.close(scene["view"])
 
 total = comm.allreduce(len(failures))
 print("rank %d: %d failure(s) on all ranks" % (comm.rank, total))

@@ -12,6 +12,9 @@ time-varying source, and ParaView's animation steps through it.
   time within the same step decodes nothing (the reader gives the same arrays again).
 - A series whose second file has another grid fails at that step with an error naming both
   files, and the first step still reads.
+- On the globe: a series of red, green and blue global images shown as "Globe" (Color) paints
+  the globe with each step's colour as the animation moves; a new step uploads 1 texture, a
+  time within the same step none.
 """
 import os
 import shutil
@@ -19,7 +22,8 @@ import sys
 import tempfile
 
 from paraview.simple import (LoadPlugin, GetAnimationScene, GetTimeKeeper, CreateRenderView,
-                             Show, Render, Delete)
+                             Show, Render, Delete, SaveScreenshot)
+from vtkmodules.util.vtkConstants import VTK_UNSIGNED_CHAR
 from vtkmodules.vtkCommonCore import vtkFloatArray
 from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkIOImage import vtkTIFFWriter
@@ -54,6 +58,41 @@ def write_step(folder, name, k, w=16, h=8):
         world.write("%r\n0\n0\n%r\n%r\n%r\n" % (360.0 / w, -180.0 / h, -180.0 + 180.0 / w,
                                                  90.0 - 90.0 / h))
     return path
+
+
+def write_colour_step(folder, name, k, w=16, h=8):
+    """A global w x h RGB TIFF with a world file: pure red, green or blue for k = 0, 1, 2."""
+    image = vtkImageData()
+    image.SetDimensions(w, h, 1)
+    image.AllocateScalars(VTK_UNSIGNED_CHAR, 3)
+    rgb = image.GetPointData().GetScalars()
+    for n in range(w * h):
+        rgb.SetTuple3(n, *(255.0 if c == k else 0.0 for c in range(3)))
+    path = os.path.join(folder, name + ".tif")
+    writer = vtkTIFFWriter()
+    writer.SetInputData(image)
+    writer.SetFileName(path)
+    writer.Write()
+    with open(os.path.join(folder, name + ".tfw"), "w") as world:
+        world.write("%r\n0\n0\n%r\n%r\n%r\n" % (360.0 / w, -180.0 / h, -180.0 + 180.0 / w,
+                                                 90.0 - 90.0 / h))
+    return path
+
+
+def step_pixels(path):
+    """Pixels of a screenshot that are each step's pure colour (red, green, blue)."""
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    scalars = reader.GetOutput().GetPointData().GetScalars()
+    counts = [0, 0, 0]
+    for n in range(scalars.GetNumberOfTuples()):
+        rgb = scalars.GetTuple(n)[:3]
+        for c in range(3):
+            if rgb[c] > 200 and all(rgb[o] < 40 for o in range(3) if o != c):
+                counts[c] += 1
+    return counts
 
 
 def output_of(proxy):
@@ -131,6 +170,37 @@ try:
     # Deleted here: left to pvpython's exit, this view ends the process with an X error
     # (GLXBadContext) under Xvfb.
     Delete(display)
+    Delete(view)
+
+    # A colour series on the globe: red, green, blue steps shown as "Globe" (Color).
+    colour_files = [write_colour_step(folder, "colour_%d" % k, k) for k in range(3)]
+    colour_series = GlobeRasterReader(FileNames=colour_files)  # noqa: F821
+    scene.UpdateAnimationUsingDataTimeSteps()
+    view = CreateRenderView()
+    view.ViewSize = [200, 150]
+    view.OrientationAxesVisibility = 0
+    view.CameraPosition = [3.0e7, 0.0, 0.0]
+    view.CameraFocalPoint = [0.0, 0.0, 0.0]
+    view.CameraViewUp = [0.0, 0.0, 1.0]
+    globe = Show(colour_series, view)
+    globe.Representation = "Globe"
+    globe.GlobeLayerRole = "Color"
+    uploads = None
+    for time, k, uploaded in ((0.0, 0, None), (1.0, 1, 1), (1.5, 1, 0), (2.0, 2, 1), (0.0, 0, 1)):
+        scene.AnimationTime = time
+        Render(view)
+        path = os.path.join(folder, "globe.png")
+        SaveScreenshot(path, view, ImageResolution=[200, 150])
+        pixels = step_pixels(path)
+        globe.UpdatePropertyInformation()
+        now = globe.GetPropertyValue("GlobeUploads")
+        count = None if uploads is None else now - uploads
+        uploads = now
+        expect(pixels[k] > 5000 and sum(pixels) == pixels[k] and
+               (uploaded is None or count == uploaded),
+               "globe at time %.1f: %d pixels of step %d's colour (%s by step), %s upload(s)"
+               % (time, pixels[k], k, pixels, "the first" if count is None else count))
+    Delete(globe)
     Delete(view)
 finally:
     shutil.rmtree(folder)

@@ -1,0 +1,110 @@
+"""The Globe representation in ParaView's render view (pvpython, one process).
+
+- Data/earth's relief (Height) and Blue Marble imagery (Color) shown as "Globe" are the two
+  layers of one globe (the view's), uploaded once each.
+- The picture matches Baseline/TestGlobeParaViewRepresentation.png within VTK's regression
+  threshold; it is written as globe-1rank.png for the 2-rank test to compare with.
+- Depth is shared with ParaView's other representations: the red sphere behind the globe is
+  hidden (0 red pixels) and appears when the globe's layers are hidden; the yellow sphere at the
+  limb is partly hidden; the grey cone in front of the globe covers the globe where it stands.
+- Layer settings are uniforms: opacity 0 on the imagery changes the picture and uploads
+  nothing; opacity 1 gives the first picture back.
+"""
+import os
+import shutil
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from paraview.simple import LoadPlugin, SaveScreenshot, Render  # noqa: E402
+import globe_scene  # noqa: E402
+
+PLUGIN = os.environ["VTKGLOBE_PARAVIEW_PLUGIN"]
+DATA = os.environ["VTKGLOBE_DATA_DIR"]
+OUTPUT = os.environ["VTKGLOBE_PARAVIEW_OUTPUT"]
+BASELINE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "Baseline",
+                        "TestGlobeParaViewRepresentation.png")
+THRESHOLD = 0.15
+failures = []
+
+
+def expect(condition, what):
+    print("%s %s" % ("ok  " if condition else "FAIL", what))
+    if not condition:
+        failures.append(what)
+
+
+def property_value(display, name):
+    display.UpdatePropertyInformation()
+    return display.GetPropertyValue(name)
+
+
+def shot(view, name):
+    path = os.path.join(OUTPUT, name)
+    SaveScreenshot(path, view, ImageResolution=globe_scene.SIZE)
+    return path, globe_scene.read_png(path)[2]
+
+
+LoadPlugin(PLUGIN, remote=False, ns=globals())
+os.makedirs(OUTPUT, exist_ok=True)
+scene = globe_scene.build(globals(), DATA)
+view, heights, colours = scene["view"], scene["heights"], scene["colours"]
+first, rgb = shot(view, "globe-1rank.png")
+layers = property_value(heights, "GlobeLayers")
+uploads = property_value(heights, "GlobeUploads")
+expect(layers == 2 and uploads == 2,
+       "two Globe representations are the %d layers of one globe, %d uploads" % (layers, uploads))
+
+if os.path.exists(BASELINE):
+    error = globe_scene.image_error(first, BASELINE)
+    expect(error <= THRESHOLD, "the picture matches the baseline: error %.4f (threshold %.2f)"
+           % (error, THRESHOLD))
+else:
+    shutil.copy(first, os.path.join(OUTPUT, os.path.basename(BASELINE)))
+    expect(False, "no baseline: %s written to %s" % (os.path.basename(BASELINE), OUTPUT))
+
+# Depth shared with the other representations.
+reds, yellows = globe_scene.count(rgb, globe_scene.red), globe_scene.count(rgb, globe_scene.yellow)
+renderer = view.GetClientSideObject().GetRenderer()
+renderer.SetWorldPoint(1.0e7, 3.2e6, 2.4e6, 1.0)  # the cone's centre
+renderer.WorldToDisplay()
+x, y = [int(round(v)) for v in renderer.GetDisplayPoint()[:2]]
+k = 3 * ((globe_scene.SIZE[1] - 1 - y) * globe_scene.SIZE[0] + x)  # PNG rows run top down
+cone_pixel = tuple(rgb[k:k + 3])
+heights.Visibility = 0
+colours.Visibility = 0
+Render(view)
+_, bare = shot(view, "globe-hidden.png")
+reds_bare = globe_scene.count(bare, globe_scene.red)
+yellows_bare = globe_scene.count(bare, globe_scene.yellow)
+hidden_pixel = tuple(bare[k:k + 3])
+expect(reds == 0 and reds_bare > 50,
+       "the red sphere behind the globe: %d red pixels, %d with the globe hidden" %
+       (reds, reds_bare))
+expect(0 < yellows < yellows_bare,
+       "the yellow sphere at the limb is partly hidden: %d of its %d pixels show" %
+       (yellows, yellows_bare))
+expect(globe_scene.grey(*cone_pixel) and globe_scene.grey(*hidden_pixel),
+       "the cone in front of the globe: its centre pixel (%d, %d) is the cone's grey %s "
+       "(%s without the globe)" % (x, y, cone_pixel, hidden_pixel))
+heights.Visibility = 1
+colours.Visibility = 1
+Render(view)
+
+# A layer setting is a uniform: no upload, the picture changes and comes back.
+before = property_value(heights, "GlobeUploads")
+colours.GlobeOpacity = 0.0
+Render(view)
+_, transparent = shot(view, "globe-opacity0.png")
+colours.GlobeOpacity = 1.0
+Render(view)
+back, _ = shot(view, "globe-opacity1.png")
+after = property_value(heights, "GlobeUploads")
+changed = sum(1 for a, b in zip(transparent, rgb) if a != b)
+error = globe_scene.image_error(back, first)
+expect(after == before and changed > 10000 and error == 0.0,
+       "imagery opacity 0 and back to 1: %d uploads, %d values changed, then error %.4f "
+       "against the first picture" % (after - before, changed, error))
+
+globe_scene.close(view)
+print("%d failure(s)" % len(failures))
+sys.exit(1 if failures else 0)
