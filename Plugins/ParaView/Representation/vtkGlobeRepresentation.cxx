@@ -31,8 +31,8 @@ struct vtkGlobeRepresentationGlobe
   vtkNew<vtkActor> Actor;
   vtkPVRenderView* View = nullptr; // the key only: the view may go before its representations
   vtkWeakPointer<vtkRenderer> Renderer;
-  // Which representation's globe settings are in force, and since when.
-  vtkMTimeType SettingsTime = 0;
+  // When each globe setting in force was changed (vtkGlobeRepresentation::GlobeSettings).
+  vtkMTimeType SettingTimes[vtkGlobeRepresentation::NumberOfGlobeSettings] = {};
   // The visible representations: with none, the globe is hidden too (not a bare body).
   std::set<vtkGlobeRepresentation*> Shown;
 
@@ -110,8 +110,8 @@ std::map<vtkPVRenderView*, std::weak_ptr<vtkGlobeRepresentationGlobe>>& Globes()
 //------------------------------------------------------------------------------------------
 vtkGlobeRepresentation::vtkGlobeRepresentation()
 {
-  // Settings stamp only when changed here (ParaView's initial pushes of the defaults change
-  // nothing), so a representation joining a globe does not undo the settings in force.
+  // Settings are stamped only when changed here (ParaView's initial pushes of the defaults
+  // change nothing), so a representation joining a globe does not undo the settings in force.
   this->Layer->SetRoleToHeight();
 }
 
@@ -244,12 +244,14 @@ bool vtkGlobeRepresentation::AddToView(vtkView* view)
   {
     globe = std::make_shared<vtkGlobeRepresentationGlobe>(rview);
     globes[rview] = globe;
-    this->GlobeSettingsTime.Modified(); // the first representation sets up the new globe
   }
+  const bool created = globe.use_count() == 2; // the map's lock and this one
   this->ViewGlobe = globe;
   this->Layer->SetEnabled(this->GetVisibility());
   globe->Show(this, this->GetVisibility());
-  this->ApplyGlobeSettings();
+  // A new globe takes all of its first representation's settings; a joining representation
+  // only those it changed later than the globe's.
+  this->ApplyGlobeSettings(created);
   return this->Superclass::AddToView(view);
 }
 
@@ -284,55 +286,91 @@ void vtkGlobeRepresentation::SetVisibility(bool visible)
 }
 
 //------------------------------------------------------------------------------------------
-void vtkGlobeRepresentation::GlobeSettingChanged()
+void vtkGlobeRepresentation::GlobeSettingChanged(int setting)
 {
-  this->GlobeSettingsTime.Modified();
+  vtkTimeStamp now;
+  now.Modified();
+  this->SettingTimes[setting] = now.GetMTime();
   this->Modified();
 }
 
-void vtkGlobeRepresentation::ApplyGlobeSettings()
+void vtkGlobeRepresentation::ApplyGlobeSettings(bool all)
 {
   vtkGlobeRepresentationGlobe* globe = this->ViewGlobe.get();
-  if (!globe || globe->SettingsTime >= this->GlobeSettingsTime.GetMTime())
+  if (!globe)
   {
-    return; // another representation's later settings are in force
+    return;
   }
-  globe->SettingsTime = this->GlobeSettingsTime.GetMTime();
   vtkGlobeMapper* mapper = globe->Mapper;
-  vtkGlobeEllipsoid* body = mapper->GetEllipsoid();
-  switch (this->Body)
+  for (int setting = 0; setting < NumberOfGlobeSettings; ++setting)
   {
-    case 1:
-      body->SetToMoon();
-      break;
-    case 2:
-      body->SetToMars();
-      break;
-    default:
-      body->SetToWGS84();
+    // Per setting, the last change in any of the view's Globe representations is in force.
+    if (!all && globe->SettingTimes[setting] >= this->SettingTimes[setting])
+    {
+      continue;
+    }
+    globe->SettingTimes[setting] = std::max(globe->SettingTimes[setting], this->SettingTimes[setting]);
+    switch (setting)
+    {
+      case BodySetting:
+        if (this->Body == 1)
+        {
+          mapper->GetEllipsoid()->SetToMoon();
+        }
+        else if (this->Body == 2)
+        {
+          mapper->GetEllipsoid()->SetToMars();
+        }
+        else
+        {
+          mapper->GetEllipsoid()->SetToWGS84();
+        }
+        break;
+      case GridSetting:
+        mapper->SetGridPixelsPerCell(this->GridPixelsPerCell);
+        break;
+      case RefinementSetting:
+        mapper->SetTerrainRefinement(this->TerrainRefinement);
+        break;
+      case LightingSetting:
+        mapper->SetLighting(this->Lighting);
+        break;
+      case AtmosphereSetting:
+        mapper->SetAtmosphere(this->Atmosphere);
+        break;
+      case GraticuleSetting:
+        mapper->SetGraticule(this->Graticule);
+        break;
+      case NightLightsSetting:
+        mapper->SetNightLights(this->NightLights);
+        break;
+      case SpecularWaterSetting:
+        mapper->SetSpecularWater(this->SpecularWater);
+        break;
+      default:
+        mapper->SetContours(this->Contours);
+    }
   }
-  mapper->SetGridPixelsPerCell(this->GridPixelsPerCell);
-  mapper->SetTerrainRefinement(this->TerrainRefinement);
-  mapper->SetLighting(this->Lighting);
-  mapper->SetAtmosphere(this->Atmosphere);
-  mapper->SetGraticule(this->Graticule);
 }
 
-#define vtkGlobeGlobeSetting(name, type)                                                       \
+#define vtkGlobeGlobeSetting(name, type, setting)                                              \
   void vtkGlobeRepresentation::Set##name(type value)                                           \
   {                                                                                            \
     if (this->name != value)                                                                   \
     {                                                                                          \
       this->name = value;                                                                      \
-      this->GlobeSettingChanged();                                                             \
+      this->GlobeSettingChanged(setting);                                                      \
     }                                                                                          \
   }
-vtkGlobeGlobeSetting(Body, int);
-vtkGlobeGlobeSetting(GridPixelsPerCell, double);
-vtkGlobeGlobeSetting(TerrainRefinement, int);
-vtkGlobeGlobeSetting(Lighting, bool);
-vtkGlobeGlobeSetting(Atmosphere, bool);
-vtkGlobeGlobeSetting(Graticule, bool);
+vtkGlobeGlobeSetting(Body, int, BodySetting);
+vtkGlobeGlobeSetting(GridPixelsPerCell, double, GridSetting);
+vtkGlobeGlobeSetting(TerrainRefinement, int, RefinementSetting);
+vtkGlobeGlobeSetting(Lighting, bool, LightingSetting);
+vtkGlobeGlobeSetting(Atmosphere, bool, AtmosphereSetting);
+vtkGlobeGlobeSetting(Graticule, bool, GraticuleSetting);
+vtkGlobeGlobeSetting(NightLights, bool, NightLightsSetting);
+vtkGlobeGlobeSetting(SpecularWater, bool, SpecularWaterSetting);
+vtkGlobeGlobeSetting(Contours, bool, ContoursSetting);
 #undef vtkGlobeGlobeSetting
 
 //------------------------------------------------------------------------------------------
@@ -394,6 +432,9 @@ void vtkGlobeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Lighting: " << this->Lighting << "\n";
   os << indent << "Atmosphere: " << this->Atmosphere << "\n";
   os << indent << "Graticule: " << this->Graticule << "\n";
+  os << indent << "NightLights: " << this->NightLights << "\n";
+  os << indent << "SpecularWater: " << this->SpecularWater << "\n";
+  os << indent << "Contours: " << this->Contours << "\n";
   os << indent << "Layer:\n";
   this->Layer->PrintSelf(os, indent.GetNextIndent());
   os << indent << "GlobeLayers: " << this->GetNumberOfGlobeLayers() << "\n";

@@ -8,9 +8,9 @@
  * single vtkGlobeMapper that the view's representations share: the pipeline browser is the
  * layer list (the eye shows or hides a layer), and each representation's properties are its
  * layer's (role, blend mode, opacity, draw order, value scale and offset, feather,
- * interpolation). The globe's own settings (body, grid, refinement, lighting, atmosphere,
- * graticule) are properties of every Globe representation and set the view's one globe: the
- * last one changed is the one in force. The globe's actor is in the view's renderer, so it
+ * interpolation). The globe's own settings (body, grid, refinement, effects) are properties
+ * of every Globe representation and set the view's one globe: for each setting, its last
+ * change in any of them is in force. The globe's actor is in the view's renderer, so it
  * shares the depth buffer with every other representation, and IceT composites it by depth.
  *
  * Each rendering process draws the whole globe with the whole raster: the representation
@@ -25,7 +25,7 @@
 #include "vtkGlobeParaViewModule.h" // for export macro
 #include "vtkNew.h"                 // for vtkNew
 #include "vtkPVDataRepresentation.h"
-#include "vtkTimeStamp.h" // for vtkTimeStamp
+#include "vtkType.h" // for vtkMTimeType
 
 #include <memory> // for std::shared_ptr
 
@@ -60,7 +60,8 @@ public:
   ///@{
   /**
    * The view's globe: Body 0 is WGS 84, 1 the Moon, 2 Mars; the mapper's GridPixelsPerCell,
-   * TerrainRefinement, Lighting, Atmosphere and Graticule.
+   * TerrainRefinement and effects (Lighting, Atmosphere, Graticule, NightLights,
+   * SpecularWater, Contours).
    */
   void SetBody(int body);
   vtkGetMacro(Body, int);
@@ -74,7 +75,29 @@ public:
   vtkGetMacro(Atmosphere, bool);
   void SetGraticule(bool on);
   vtkGetMacro(Graticule, bool);
+  void SetNightLights(bool on);
+  vtkGetMacro(NightLights, bool);
+  void SetSpecularWater(bool on);
+  vtkGetMacro(SpecularWater, bool);
+  void SetContours(bool on);
+  vtkGetMacro(Contours, bool);
   ///@}
+
+  /// The globe settings above, each in force as last changed in any of the view's Globe
+  /// representations.
+  enum GlobeSettings
+  {
+    BodySetting,
+    GridSetting,
+    RefinementSetting,
+    LightingSetting,
+    AtmosphereSetting,
+    GraticuleSetting,
+    NightLightsSetting,
+    SpecularWaterSetting,
+    ContoursSetting,
+    NumberOfGlobeSettings
+  };
 
   /// The number of layers the globe of this representation's view holds (0 when not in a view).
   int GetNumberOfGlobeLayers();
@@ -99,20 +122,23 @@ protected:
   bool Lighting = false;
   bool Atmosphere = false;
   bool Graticule = false;
+  bool NightLights = false;
+  bool SpecularWater = false;
+  bool Contours = false;
 
 private:
   vtkGlobeRepresentation(const vtkGlobeRepresentation&) = delete;
   void operator=(const vtkGlobeRepresentation&) = delete;
 
-  void GlobeSettingChanged();
-  void ApplyGlobeSettings();
+  void GlobeSettingChanged(int setting);
+  void ApplyGlobeSettings(bool all = false);
 
   // The globe of the view this representation is in, shared with the view's other ones.
   std::shared_ptr<vtkGlobeRepresentationGlobe> ViewGlobe;
   vtkNew<vtkGlobeLayer> Layer;
   vtkNew<vtkImageData> Cache;     // the input raster, handed to the view for delivery
   vtkNew<vtkImageData> Shown;     // the delivered raster, the layer's input
-  vtkTimeStamp GlobeSettingsTime; // when a globe setting was last changed here
+  vtkMTimeType SettingTimes[NumberOfGlobeSettings] = {}; // when each was changed here
   bool InGlobe = false;           // the layer is one of the view's globe's
 };
 

@@ -9,6 +9,8 @@
   limb is partly hidden; the grey cone in front of the globe covers the globe where it stands.
 - Layer settings are uniforms: opacity 0 on the imagery changes the picture and uploads
   nothing; opacity 1 gives the first picture back.
+- The globe's settings, set on either representation, reach the view's one globe: GlobeBody
+  "Moon" shrinks it, GlobeGraticule draws lines, and back to WGS 84 the first picture returns.
 """
 import os
 import shutil
@@ -104,6 +106,33 @@ error = globe_scene.image_error(back, first)
 expect(after == before and changed > 10000 and error == 0.0,
        "imagery opacity 0 and back to 1: %d uploads, %d values changed, then error %.4f "
        "against the first picture" % (after - before, changed, error))
+
+# The globe's settings reach the view's one globe: the Moon's body under the same imagery,
+# the graticule, and back to WGS 84.
+def globe_pixels(rgb):
+    return globe_scene.count(rgb, lambda r, g, b: (r, g, b) != (13, 13, 26) and
+                             not globe_scene.red(r, g, b) and not globe_scene.yellow(r, g, b))
+
+
+earth = globe_pixels(rgb)
+heights.GlobeBody = "Moon"
+Render(view)
+_, moon = shot(view, "globe-moon.png")
+colours.GlobeGraticule = 1  # on the other representation: the body stays the Moon
+Render(view)
+_, graticule = shot(view, "globe-graticule.png")
+colours.GlobeGraticule = 0
+heights.GlobeBody = "Earth (WGS 84)"
+Render(view)
+again, _ = shot(view, "globe-earth-again.png")
+ratio = globe_pixels(moon) / float(earth)
+lines = sum(1 for a, b in zip(moon, graticule) if a != b)
+moon_again = globe_pixels(graticule) / float(earth)
+expect(0.05 < ratio < 0.4 and lines > 200 and abs(moon_again - ratio) < 0.05 and
+       globe_scene.image_error(again, first) == 0.0,
+       "GlobeBody Moon: %.2f of the Earth's pixels (the cone and slice stay); GlobeGraticule set "
+       "on the other representation draws lines (%d values change) on the Moon (%.2f); back to "
+       "WGS 84, the first picture" % (ratio, lines, moon_again))
 
 globe_scene.close(view)
 print("%d failure(s)" % len(failures))
