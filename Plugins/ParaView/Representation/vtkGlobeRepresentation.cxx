@@ -240,12 +240,12 @@ bool vtkGlobeRepresentation::AddToView(vtkView* view)
   }
   auto& globes = Globes();
   std::shared_ptr<vtkGlobeRepresentationGlobe> globe = globes[rview].lock();
-  if (!globe)
+  const bool created = !globe;
+  if (created)
   {
     globe = std::make_shared<vtkGlobeRepresentationGlobe>(rview);
     globes[rview] = globe;
   }
-  const bool created = globe.use_count() == 2; // the map's lock and this one
   this->ViewGlobe = globe;
   this->Layer->SetEnabled(this->GetVisibility());
   globe->Show(this, this->GetVisibility());

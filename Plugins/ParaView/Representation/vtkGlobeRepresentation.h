@@ -119,7 +119,7 @@ protected:
   int Body = 0;
   double GridPixelsPerCell = 1.6;
   int TerrainRefinement = 1;
-  bool Lighting = false;
+  bool Lighting = true; // as vtkGlobeMapper
   bool Atmosphere = false;
   bool Graticule = false;
   bool NightLights = false;

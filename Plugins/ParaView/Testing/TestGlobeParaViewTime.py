@@ -185,6 +185,7 @@ try:
     globe = Show(colour_series, view)
     globe.Representation = "Globe"
     globe.GlobeLayerRole = "Color"
+    globe.GlobeLighting = 0  # unlit: each pixel is the step's pure colour
     uploads = None
     for time, k, uploaded in ((0.0, 0, None), (1.0, 1, 1), (1.5, 1, 0), (2.0, 2, 1), (0.0, 0, 1)):
         scene.AnimationTime = time
