@@ -3,7 +3,9 @@
 
 Checks the wrapped reader's information pass and georeferencing field data, that the layer's
 values follow the filter (raw + shift, row 0 north), that Modified() upstream re-loads the
-layer, and that a reader error reaches a Python observer with the file name and the reason.
+layer, that a series of files is a time-varying source whose layer follows its UpdateTime
+(loading again only for a new step), and that a reader error reaches a Python observer with the
+file name and the reason.
 """
 import os
 import sys
@@ -63,6 +65,24 @@ class TestGlobeReader(unittest.TestCase):
         reader.Modified()
         layer.Update()
         self.assertEqual(layer.GetNumberOfLoads(), loads + 2)
+
+    def test_time_series(self):
+        # Two steps of one file (the data does not matter here: the wrapped API does).
+        relief = os.path.join(DATA, "earth", "relief_2deg.tif")
+        reader = vtkGlobeRasterReader()
+        reader.AddFileName(relief, 2026.5)
+        reader.AddFileName(relief, 2026.0)
+        self.assertEqual(reader.GetNumberOfFileNames(), 2)
+        reader.UpdateInformation()
+        info = reader.GetOutputInformation(0)
+        self.assertEqual(info.Get(vtkStreamingDemandDrivenPipeline.TIME_STEPS()), (2026.0, 2026.5))
+        layer = vtkGlobeLayer()
+        layer.SetInputConnection(reader.GetOutputPort())
+        for time, step, loads in ((2026.2, 2026.0, 1), (2026.4, 2026.0, 1), (2027.0, 2026.5, 2)):
+            layer.SetUpdateTime(time)
+            self.assertTrue(layer.Update())
+            self.assertEqual(layer.GetDataTime(), step)
+            self.assertEqual(layer.GetNumberOfLoads(), loads)
 
     def test_errors_reach_python(self):
         reader = vtkGlobeRasterReader()
