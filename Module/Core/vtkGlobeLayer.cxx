@@ -1684,7 +1684,13 @@ std::string vtkGlobeLayer::DescribeSource()
         in.Sink->GetNumberOfInputConnections(0) > 0 ? in.Sink->GetInputDataObject(0, 0) : nullptr;
       const std::string file = FieldString(input ? input->GetFieldData() : nullptr,
         vtkGlobeRasterReader::GetFileNameArrayName());
-      return file.empty() ? std::string("the layer's input") : "'" + file + "' (the layer's input)";
+      if (file.empty())
+      {
+        // A display name (ParaView's for its source, say) is better than none.
+        return this->Name && *this->Name ? "'" + std::string(this->Name) + "' (the layer's input)"
+                                         : std::string("the layer's input");
+      }
+      return "'" + file + "' (the layer's input)";
     }
   }
 }
@@ -1761,8 +1767,9 @@ bool vtkGlobeLayer::Load(vtkImageData* image, int streamedRows)
   if (width <= 0 || imageRows <= 0 || extent[5] != extent[4] || !scalars ||
     scalars->GetNumberOfTuples() != static_cast<vtkIdType>(width) * imageRows)
   {
-    return fail("it is not a 2D image with point scalars (extent " + std::to_string(width) + " x " +
-      std::to_string(height) + ")");
+    return fail("it is not a 2D image with point scalars (" + std::to_string(width) + " x " +
+      std::to_string(height) + " x " + std::to_string(extent[5] - extent[4] + 1) + " points, " +
+      (scalars ? "with" : "without") + " point scalars)");
   }
   const int channels = scalars->GetNumberOfComponents();
   if (this->Role == Height && channels != 1)

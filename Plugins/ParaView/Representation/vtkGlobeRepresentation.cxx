@@ -6,6 +6,7 @@
 #include "vtkGlobeLayer.h"
 #include "vtkGlobeLayerSet.h"
 #include "vtkGlobeMapper.h"
+#include "vtkGlobeRasterReader.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkImageData.h"
@@ -16,9 +17,13 @@
 #include "vtkPVRenderView.h"
 #include "vtkRenderer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
 #include "vtkWeakPointer.h"
 
+#include <vtksys/SystemTools.hxx>
+
 #include <algorithm>
+#include <string>
 #include <map>
 #include <set>
 
@@ -212,6 +217,13 @@ int vtkGlobeRepresentation::ProcessViewRequest(
       {
         this->Shown->Initialize();
         this->Shown->ShallowCopy(delivered);
+        // The layer's name in its messages: the raster's file, else ParaView's name for it.
+        auto* file = vtkStringArray::SafeDownCast(delivered->GetFieldData()->GetAbstractArray(
+          vtkGlobeRasterReader::GetFileNameArrayName()));
+        const std::string name = file && file->GetNumberOfValues() > 0
+          ? vtksys::SystemTools::GetFilenameName(file->GetValue(0))
+          : this->GetLogName();
+        this->Layer->SetName(name.empty() ? nullptr : name.c_str());
         if (this->Layer->GetInputAlgorithm() == nullptr ||
           this->Layer->GetInputAlgorithm()->GetOutputDataObject(0) != this->Shown)
         {

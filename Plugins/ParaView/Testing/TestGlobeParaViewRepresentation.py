@@ -11,6 +11,8 @@
   nothing; opacity 1 gives the first picture back.
 - The globe's settings, set on either representation, reach the view's one globe: GlobeBody
   "Moon" shrinks it, GlobeGraticule draws lines, and back to WGS 84 the first picture returns.
+- Bad input: a 3D image (a wavelet) shown as Globe is refused with an error and the picture is
+  unchanged; deleting its representation removes its layer.
 """
 import os
 import shutil
@@ -133,6 +135,23 @@ expect(0.05 < ratio < 0.4 and lines > 200 and abs(moon_again - ratio) < 0.05 and
        "GlobeBody Moon: %.2f of the Earth's pixels (the cone and slice stay); GlobeGraticule set "
        "on the other representation draws lines (%d values change) on the Moon (%.2f); back to "
        "WGS 84, the first picture" % (ratio, lines, moon_again))
+
+# Bad input: a 3D image data set shown as Globe is refused with an error naming the problem,
+# and the rest of the scene renders as before.
+from paraview.simple import Wavelet, Show, Delete  # noqa: E402
+wavelet = Wavelet()
+bad = Show(wavelet, view)
+bad.Representation = "Globe"
+Render(view)
+with_bad, _ = shot(view, "globe-bad-input.png")
+error = globe_scene.image_error(with_bad, first)
+layers = property_value(heights, "GlobeLayers")
+expect(error == 0.0 and layers == 3,
+       "a 3D wavelet as Globe: refused (an error says why), the picture unchanged (error %.4f), "
+       "%d layers" % (error, layers))
+Delete(bad)
+Render(view)
+expect(property_value(heights, "GlobeLayers") == 2, "deleted, it leaves the globe: 2 layers")
 
 globe_scene.close(view)
 print("%d failure(s)" % len(failures))
