@@ -40,8 +40,22 @@ def expect(condition, what):
         failures.append(what)
 
 
+def write_global_tiff(folder, name, image):
+    """`image` as a TIFF with a world file that spreads it over the globe (plate carree)."""
+    w, h = image.GetDimensions()[:2]
+    path = os.path.join(folder, name + ".tif")
+    writer = vtkTIFFWriter()
+    writer.SetInputData(image)
+    writer.SetFileName(path)
+    writer.Write()
+    with open(os.path.join(folder, name + ".tfw"), "w") as world:
+        world.write("%r\n0\n0\n%r\n%r\n%r\n" % (360.0 / w, -180.0 / h, -180.0 + 180.0 / w,
+                                                 90.0 - 90.0 / h))
+    return path
+
+
 def write_step(folder, name, k, w=16, h=8):
-    """A global w x h float TIFF with a world file: values 100 k + (0 .. w h - 1)."""
+    """A global w x h float raster: values 100 k + (0 .. w h - 1)."""
     image = vtkImageData()
     image.SetDimensions(w, h, 1)
     values = vtkFloatArray()
@@ -49,34 +63,18 @@ def write_step(folder, name, k, w=16, h=8):
     for n in range(w * h):
         values.SetValue(n, 100.0 * k + n)
     image.GetPointData().SetScalars(values)
-    path = os.path.join(folder, name + ".tif")
-    writer = vtkTIFFWriter()
-    writer.SetInputData(image)
-    writer.SetFileName(path)
-    writer.Write()
-    with open(os.path.join(folder, name + ".tfw"), "w") as world:
-        world.write("%r\n0\n0\n%r\n%r\n%r\n" % (360.0 / w, -180.0 / h, -180.0 + 180.0 / w,
-                                                 90.0 - 90.0 / h))
-    return path
+    return write_global_tiff(folder, name, image)
 
 
 def write_colour_step(folder, name, k, w=16, h=8):
-    """A global w x h RGB TIFF with a world file: pure red, green or blue for k = 0, 1, 2."""
+    """A global w x h RGB raster: pure red, green or blue for k = 0, 1, 2."""
     image = vtkImageData()
     image.SetDimensions(w, h, 1)
     image.AllocateScalars(VTK_UNSIGNED_CHAR, 3)
     rgb = image.GetPointData().GetScalars()
     for n in range(w * h):
         rgb.SetTuple3(n, *(255.0 if c == k else 0.0 for c in range(3)))
-    path = os.path.join(folder, name + ".tif")
-    writer = vtkTIFFWriter()
-    writer.SetInputData(image)
-    writer.SetFileName(path)
-    writer.Write()
-    with open(os.path.join(folder, name + ".tfw"), "w") as world:
-        world.write("%r\n0\n0\n%r\n%r\n%r\n" % (360.0 / w, -180.0 / h, -180.0 + 180.0 / w,
-                                                 90.0 - 90.0 / h))
-    return path
+    return write_global_tiff(folder, name, image)
 
 
 def step_pixels(path):
