@@ -1371,15 +1371,18 @@ public:
       return "the series gives times for " + std::to_string(timed) + " of its " +
         std::to_string(this->Steps.size()) + " files: give every file a time, or none";
     }
+    for (const Step& step : this->Steps)
+    {
+      if (!std::isfinite(step.Time))
+      {
+        return "the time of '" + step.File + "' is not a finite number";
+      }
+    }
     std::stable_sort(this->Steps.begin(), this->Steps.end(),
       [](const Step& a, const Step& b) { return a.Time < b.Time; });
-    for (size_t i = 0; i < this->Steps.size(); ++i)
+    for (size_t i = 1; i < this->Steps.size(); ++i)
     {
-      if (!std::isfinite(this->Steps[i].Time))
-      {
-        return "the time of '" + this->Steps[i].File + "' is not a finite number";
-      }
-      if (i > 0 && this->Steps[i].Time == this->Steps[i - 1].Time)
+      if (this->Steps[i].Time == this->Steps[i - 1].Time)
       {
         std::ostringstream why;
         why.precision(17);

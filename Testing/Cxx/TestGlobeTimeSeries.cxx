@@ -9,9 +9,9 @@
 //   layer reads that step's file directly; the steps' frames differ from each other.
 // - Uploads: a change of step re-uploads that layer alone (the height layer stays), a time within
 //   the same step uploads and reads nothing.
-// - Bad series: times for some files only, two files at one time, a file whose grid differs from
-//   the first step's, a missing file: each an error naming the problem; the other steps and the
-//   rest of the scene still render.
+// - Bad series: times for some files only, two files at one time, a NaN time, a file whose grid
+//   differs from the first step's, a missing file: each an error naming the problem; the other
+//   steps and the rest of the scene still render.
 #include "vtkGlobeLayerSet.h"
 #include "vtkGlobeRasterReader.h"
 #include "vtkGlobeRenderingTestHelpers.h"
@@ -242,6 +242,12 @@ int TestGlobeTimeSeries(int, char*[])
     mixed->UpdateInformation();
     Expect(Said(errors, { "two files have the time 1", "series_a", "series_b" }),
       "two files at one time: refused, naming both");
+    mixed->RemoveAllFileNames();
+    mixed->AddFileName(steps[0].c_str(), 1.0);
+    mixed->AddFileName(steps[1].c_str(), NAN);
+    mixed->UpdateInformation();
+    Expect(Said(errors, { "the time of", "series_b", "not a finite number" }),
+      "a NaN time: refused, naming the file");
   }
   const std::string coarse = WriteStep("series_coarse", 1, 32, 16);
   const std::string missing = Temp + "/series_missing.png";
