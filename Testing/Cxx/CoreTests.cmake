@@ -12,6 +12,7 @@ set(globe_core_tests
   TestGlobeLayerVoidFill.cxx
   TestGlobeRasterReader.cxx
   TestGlobeRasterReaderHardening.cxx
+  TestGlobeRasterReaderSeries.cxx
   TestGlobeLayerInput.cxx
   TestGlobeLayerReprojection.cxx
   TestGlobeFeatherDistance.cxx

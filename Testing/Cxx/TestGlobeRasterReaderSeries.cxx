@@ -1,0 +1,240 @@
+// vtkGlobeRasterReader given a series of files (AddFileName), and a vtkGlobeLayer fed by it,
+// without rendering (so that the sanitizer subset covers them; Rendering.TestGlobeTimeSeries
+// renders the same through the globe).
+// - Three global 8 x 4 float TIFFs with world files, given out of order with their times: the
+//   reader announces TIME_STEPS and TIME_RANGE in time order.
+// - Each requested time reads the last step at or before it (the first before them all):
+//   its file (GlobeFileName), its values and DATA_TIME_STEP, the step's own time.
+// - The same time again runs nothing; another time within the step last read runs the reader
+//   but gives the same arrays (nothing decoded).
+// - Files without times are steps 0, 1, 2; a single file announces no time.
+// - The layer follows UpdateTime by the step's own time: another time within a step loads
+//   nothing, a new step loads once; GetDataTime is the step's time.
+// - Refused, each with an error that names the problem: times for some files only, two files
+//   at one time, a NaN time.
+#include "vtkGlobeLayer.h"
+#include "vtkGlobeRasterReader.h"
+#include "vtkGlobeTestHelpers.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
+#include "vtkTestErrorObserver.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace
+{
+vtkGlobeTest::Checklist Checks;
+
+void Expect(bool condition, const std::string& what)
+{
+  Checks.Expect(condition, what);
+}
+
+const std::string Temp = VTKGLOBE_TEMP_DIR;
+const double Times[3] = { 2026.0, 2026.25, 2026.5 };
+
+/// A global 8 x 4 float TIFF with a world file: step k holds 100 k + 0 .. 31.
+std::string WriteStep(const std::string& name, int k)
+{
+  const int w = 8, h = 4;
+  const std::string path = Temp + "/" + name + ".tif";
+  auto out = OIIO::ImageOutput::create(path);
+  std::vector<float> values(w * h);
+  for (int n = 0; n < w * h; ++n)
+  {
+    values[n] = static_cast<float>(100 * k + n);
+  }
+  if (!out || !out->open(path, OIIO::ImageSpec(w, h, 1, OIIO::TypeDesc::FLOAT)) ||
+    !out->write_image(OIIO::TypeDesc::FLOAT, values.data()) || !out->close())
+  {
+    std::printf("cannot write %s\n", path.c_str());
+  }
+  vtkGlobeTest::WriteGlobalWorldFile(Temp + "/" + name + ".tfw", w, h);
+  return path;
+}
+
+/// Counts an algorithm's executions.
+struct ExecutionCounter
+{
+  int Count = 0;
+  vtkNew<vtkCallbackCommand> Command;
+  explicit ExecutionCounter(vtkAlgorithm* algorithm)
+  {
+    this->Command->SetClientData(this);
+    this->Command->SetCallback([](vtkObject*, unsigned long, void* self, void*) {
+      ++static_cast<ExecutionCounter*>(self)->Count;
+    });
+    algorithm->AddObserver(vtkCommand::EndEvent, this->Command);
+  }
+};
+
+/// What the reader's output is after an update at `time`.
+struct Output
+{
+  std::string File;
+  double DataTime = NAN;
+  double Range[2] = { NAN, NAN };
+  vtkDataArray* Values = nullptr;
+};
+
+Output ReadAt(vtkGlobeRasterReader* reader, double time)
+{
+  reader->UpdateTimeStep(time);
+  Output o;
+  vtkImageData* image = reader->GetOutput();
+  auto* names = vtkStringArray::SafeDownCast(
+    image->GetFieldData()->GetAbstractArray(vtkGlobeRasterReader::GetFileNameArrayName()));
+  o.File = names && names->GetNumberOfValues() > 0 ? names->GetValue(0) : "";
+  if (image->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP()))
+  {
+    o.DataTime = image->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP());
+  }
+  o.Values = image->GetPointData()->GetScalars();
+  if (o.Values)
+  {
+    o.Values->GetRange(o.Range);
+  }
+  return o;
+}
+
+bool Said(vtkTest::ErrorObserver* observer, const std::vector<std::string>& words)
+{
+  const std::string message = observer->GetError() ? observer->GetErrorMessage() : "";
+  bool all = !message.empty();
+  for (const auto& w : words)
+  {
+    all = all && message.find(w) != std::string::npos;
+  }
+  const size_t from = message.find("Cannot");
+  std::printf("    said: %s\n", from == std::string::npos ? "(nothing)" : message.substr(from).c_str());
+  observer->Clear();
+  return all;
+}
+} // namespace
+
+int TestGlobeRasterReaderSeries(int, char*[])
+{
+  const std::string steps[3] = { WriteStep("series_core_a", 0), WriteStep("series_core_b", 1),
+    WriteStep("series_core_c", 2) };
+
+  vtkNew<vtkGlobeRasterReader> reader;
+  reader->AddFileName(steps[2].c_str(), Times[2]);
+  reader->AddFileName(steps[0].c_str(), Times[0]);
+  reader->AddFileName(steps[1].c_str(), Times[1]);
+  ExecutionCounter executions(reader);
+  reader->UpdateInformation();
+  vtkInformation* info = reader->GetOutputInformation(0);
+  const int n = info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+  const double* t = info->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+  const double* range = info->Get(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+  Expect(n == 3 && t && t[0] == Times[0] && t[1] == Times[1] && t[2] == Times[2] && range &&
+      range[0] == Times[0] && range[1] == Times[2] && reader->GetNumberOfFileNames() == 3 &&
+      std::string(reader->GetSeriesFileName(0)) == steps[2] && !reader->GetSeriesFileName(3),
+    vtkGlobeTest::Printf("TIME_STEPS in time order: %d steps (%.2f, %.2f, %.2f), range %.2f..%.2f",
+      n, n > 0 ? t[0] : NAN, n > 1 ? t[1] : NAN, n > 2 ? t[2] : NAN, range ? range[0] : NAN,
+      range ? range[1] : NAN));
+  struct Request
+  {
+    double Time;
+    int Step;
+  };
+  const Request requests[] = { { 2025.0, 0 }, { 2026.0, 0 }, { 2026.2, 0 }, { 2026.25, 1 },
+    { 2026.3, 1 }, { 2026.5, 2 }, { 2030.0, 2 } };
+  for (const auto& r : requests)
+  {
+    const Output o = ReadAt(reader, r.Time);
+    Expect(o.File == steps[r.Step] && o.DataTime == Times[r.Step] &&
+        o.Range[0] == 100.0 * r.Step && o.Range[1] == 100.0 * r.Step + 31,
+      vtkGlobeTest::Printf("time %.2f reads step %d (%s, DATA_TIME_STEP %.2f, values %g..%g)",
+        r.Time, r.Step, o.File.substr(o.File.rfind('/') + 1).c_str(), o.DataTime, o.Range[0],
+        o.Range[1]));
+  }
+  const int executed = executions.Count;
+  const Output before = ReadAt(reader, 2030.0);
+  Expect(executions.Count == executed,
+    vtkGlobeTest::Printf("the same time again runs nothing (%d runs before, %d after)", executed,
+      executions.Count));
+  const vtkMTimeType valuesTime = before.Values ? before.Values->GetMTime() : 0;
+  const Output within = ReadAt(reader, 2026.6);
+  Expect(executions.Count == executed + 1 && before.Values && within.Values == before.Values &&
+      within.Values->GetMTime() == valuesTime && within.DataTime == Times[2],
+    "another time within the step last read: the reader runs, and gives the same arrays "
+    "(nothing decoded)");
+
+  // Without times: positions; one file: no time.
+  {
+    vtkNew<vtkGlobeRasterReader> plain;
+    plain->AddFileName(steps[1].c_str());
+    plain->AddFileName(steps[0].c_str());
+    plain->UpdateInformation();
+    vtkInformation* plainInfo = plain->GetOutputInformation(0);
+    const double* p = plainInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    const Output second = ReadAt(plain, 1.0);
+    Expect(plainInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()) == 2 && p &&
+        p[0] == 0.0 && p[1] == 1.0 && second.File == steps[0],
+      "files without times: steps 0 and 1 in the order given");
+    vtkNew<vtkGlobeRasterReader> single;
+    single->AddFileName(steps[0].c_str());
+    single->UpdateInformation();
+    Expect(!single->GetOutputInformation(0)->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()),
+      "a single file announces no time");
+  }
+
+  // The layer by the step's own time.
+  vtkNew<vtkGlobeLayer> layer;
+  layer->SetInputConnection(reader->GetOutputPort());
+  struct Move
+  {
+    double Time;
+    int Step;
+    int Loads;
+  };
+  const Move moves[] = { { 0.0, 0, 1 }, { 2026.1, 0, 0 }, { 2026.3, 1, 1 }, { 2026.4, 1, 0 },
+    { 2027.0, 2, 1 } };
+  for (const auto& m : moves)
+  {
+    const int loads = layer->GetNumberOfLoads(), runs = executions.Count;
+    layer->SetUpdateTime(m.Time);
+    const bool ok = layer->Update();
+    Expect(ok && layer->GetDataTime() == Times[m.Step] &&
+        layer->GetNumberOfLoads() - loads == m.Loads && executions.Count - runs <= m.Loads &&
+        layer->GetMaximumValue() == 100.0 * m.Step + 31,
+      vtkGlobeTest::Printf("layer at %.2f: step %d (data time %.2f), %d load(s), %d reader run(s)",
+        m.Time, m.Step + 1, layer->GetDataTime(), layer->GetNumberOfLoads() - loads,
+        executions.Count - runs));
+  }
+
+  // Refused series.
+  vtkNew<vtkTest::ErrorObserver> errors;
+  vtkNew<vtkGlobeRasterReader> bad;
+  bad->AddObserver(vtkCommand::ErrorEvent, errors);
+  bad->AddFileName(steps[0].c_str(), 1.0);
+  bad->AddFileName(steps[1].c_str());
+  bad->UpdateInformation();
+  Expect(Said(errors, { "times for 1 of its 2 files" }), "times for some files only: refused");
+  bad->RemoveAllFileNames();
+  bad->AddFileName(steps[0].c_str(), 1.0);
+  bad->AddFileName(steps[1].c_str(), 1.0);
+  bad->UpdateInformation();
+  Expect(Said(errors, { "two files have the time 1", "series_core_a", "series_core_b" }),
+    "two files at one time: refused, naming both");
+  bad->RemoveAllFileNames();
+  bad->AddFileName(steps[0].c_str(), 1.0);
+  bad->AddFileName(steps[1].c_str(), NAN);
+  bad->UpdateInformation();
+  Expect(Said(errors, { "the time of", "series_core_b", "not a finite number" }),
+    "a NaN time: refused, naming the file");
+  return Checks.Result();
+}
