@@ -36,6 +36,17 @@ vtkStandardNewMacro(vtkGlobeLayerSet);
 
 namespace
 {
+/// A layer as messages name it: its file, else its name (a pipeline's source, say).
+std::string LayerLabel(vtkGlobeLayer* layer)
+{
+  if (layer->GetFileName())
+  {
+    return layer->GetFileName();
+  }
+  const char* name = layer->GetName();
+  return name && *name ? "'" + std::string(name) + "'" : std::string("(in-memory layer)");
+}
+
 // Largest magnitude passed for an unbounded valid range (a float uniform).
 constexpr double FloatLimit = 3.0e38;
 
@@ -457,8 +468,7 @@ int vtkGlobeLayerSet::Update()
     {
       continue; // an observer removed it while it loaded
     }
-    const std::string name =
-      layer->GetFileName() ? layer->GetFileName() : std::string("(in-memory layer)");
+    const std::string name = LayerLabel(layer);
     if (!loaded)
     {
       // The layer reported its own error; say once that the globe goes on without it.
@@ -634,7 +644,7 @@ bool vtkGlobeLayerSet::PrepareProjection(void* entry)
 {
   Entry& e = *static_cast<Entry*>(entry);
   vtkGlobeLayer* layer = e.Layer;
-  const std::string name = layer->GetFileName() ? layer->GetFileName() : "(in-memory layer)";
+  const std::string name = LayerLabel(layer);
   auto refuse = [&](const std::string& why) {
     if (!e.Reported)
     {
