@@ -224,6 +224,7 @@ int vtkGlobeRepresentation::ProcessViewRequest(
           ? vtksys::SystemTools::GetFilenameName(file->GetValue(0))
           : this->GetLogName();
         this->Layer->SetName(name.empty() ? nullptr : name.c_str());
+        this->ApplyLayerRole();
         if (this->Layer->GetInputAlgorithm() == nullptr ||
           this->Layer->GetInputAlgorithm()->GetOutputDataObject(0) != this->Shown)
         {
@@ -389,7 +390,25 @@ vtkGlobeGlobeSetting(Contours, bool, ContoursSetting);
 // The layer's settings: uniforms or a re-load of this layer alone (vtkGlobeLayer decides).
 void vtkGlobeRepresentation::SetLayerRole(int role)
 {
-  this->Layer->SetRole(role);
+  if (this->LayerRole != role)
+  {
+    this->LayerRole = role;
+    this->ApplyLayerRole();
+    this->Modified();
+  }
+}
+
+void vtkGlobeRepresentation::ApplyLayerRole()
+{
+  if (this->LayerRole >= 0)
+  {
+    this->Layer->SetRole(this->LayerRole);
+    return;
+  }
+  // Automatic: imagery (3 or 4 channels) is colour, one channel heights.
+  vtkDataArray* values = this->Shown->GetPointData()->GetScalars();
+  this->Layer->SetRole(values && values->GetNumberOfComponents() >= 3 ? vtkGlobeLayer::Color
+                                                                      : vtkGlobeLayer::Height);
 }
 void vtkGlobeRepresentation::SetBlendMode(int mode)
 {
@@ -438,6 +457,8 @@ int vtkGlobeRepresentation::GetNumberOfGlobeUploads()
 void vtkGlobeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "LayerRole: " << this->LayerRole << (this->LayerRole < 0 ? " (automatic)" : "")
+     << "\n";
   os << indent << "Body: " << this->Body << "\n";
   os << indent << "GridPixelsPerCell: " << this->GridPixelsPerCell << "\n";
   os << indent << "TerrainRefinement: " << this->TerrainRefinement << "\n";

@@ -45,8 +45,13 @@ public:
   void SetVisibility(bool visible) override;
 
   ///@{
-  /// This raster's layer (vtkGlobeLayer's settings of the same names).
+  /**
+   * This raster's layer (vtkGlobeLayer's settings of the same names). LayerRole is one of
+   * vtkGlobeLayer::Roles, or -1 (the default): automatic, Color for a raster of 3 or 4
+   * channels and Height for one of 1.
+   */
   void SetLayerRole(int role);
+  vtkGetMacro(LayerRole, int);
   void SetBlendMode(int mode);
   void SetOpacity(double opacity);
   void SetDrawOrder(int order);
@@ -116,6 +121,7 @@ protected:
   bool AddToView(vtkView* view) override;
   bool RemoveFromView(vtkView* view) override;
 
+  int LayerRole = -1;
   int Body = 0;
   double GridPixelsPerCell = 1.6;
   int TerrainRefinement = 1;
@@ -131,6 +137,7 @@ private:
   void operator=(const vtkGlobeRepresentation&) = delete;
 
   void GlobeSettingChanged(int setting);
+  void ApplyLayerRole();
   void ApplyGlobeSettings(bool all = false);
 
   // The globe of the view this representation is in, shared with the view's other ones.

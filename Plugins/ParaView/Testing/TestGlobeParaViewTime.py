@@ -130,6 +130,7 @@ try:
     # ParaView's animation drives the view's time, and the representation follows.
     view = CreateRenderView()
     display = Show(series, view)
+    display.Representation = "Slice"  # the data as a flat image (Globe is the default)
     values_before = None
     for time, k in ((0.0, 0), (1.0, 1), (1.5, 1), (2.0, 2)):
         scene.AnimationTime = time
@@ -180,9 +181,11 @@ try:
     view.CameraPosition = [3.0e7, 0.0, 0.0]
     view.CameraFocalPoint = [0.0, 0.0, 0.0]
     view.CameraViewUp = [0.0, 0.0, 1.0]
-    globe = Show(colour_series, view)
-    globe.Representation = "Globe"
-    globe.GlobeLayerRole = "Color"
+    globe = Show(colour_series, view)  # on the globe by default, as colour: 3 channels
+    globe.UpdatePropertyInformation()
+    expect(globe.Representation == "Globe" and globe.GlobeLayerRole == "Automatic",
+           "a raster is shown as %s by default, role %s" % (globe.Representation,
+                                                           globe.GlobeLayerRole))
     globe.GlobeLighting = 0  # unlit: each pixel is the step's pure colour
     uploads = None
     for time, k, uploaded in ((0.0, 0, None), (1.0, 1, 1), (1.5, 1, 0), (2.0, 2, 1), (0.0, 0, 1)):
