@@ -40,6 +40,7 @@
 #include <limits>
 #include <mutex>
 #include <new>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -1313,6 +1314,51 @@ std::unique_ptr<OIIO::ImageInput> OpenImage(const std::string& file)
 }
 } // namespace
 
+namespace
+{
+/**
+ * The date a file's name holds (YYYY-MM-DD, YYYYMMDD, YYYY_MM_DD, or YYYY-MM for the month's
+ * first day; years 1900..2099) as a decimal year: 2026-04-01 is 2026 + 90 / 365. False when
+ * the name holds none, or not a valid day.
+ */
+bool DecimalYearInName(const std::string& file, double& year)
+{
+  static const std::regex day(R"(((?:19|20)\d\d)[-_]?(0[1-9]|1[0-2])[-_]?(0[1-9]|[12]\d|3[01]))");
+  static const std::regex month(R"(((?:19|20)\d\d)[-_](0[1-9]|1[0-2]))");
+  const std::string name = std::filesystem::path(file).stem().string();
+  std::smatch m;
+  int y = 0, mo = 0, d = 1;
+  if (std::regex_search(name, m, day))
+  {
+    y = std::stoi(m[1]);
+    mo = std::stoi(m[2]);
+    d = std::stoi(m[3]);
+  }
+  else if (std::regex_search(name, m, month))
+  {
+    y = std::stoi(m[1]);
+    mo = std::stoi(m[2]);
+  }
+  else
+  {
+    return false;
+  }
+  const bool leap = (y % 4 == 0 && y % 100 != 0) || y % 400 == 0;
+  const int lengths[12] = { 31, leap ? 29 : 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31 };
+  if (d > lengths[mo - 1])
+  {
+    return false;
+  }
+  int dayOfYear = d - 1;
+  for (int k = 0; k < mo - 1; ++k)
+  {
+    dayOfYear += lengths[k];
+  }
+  year = y + dayOfYear / (leap ? 366.0 : 365.0);
+  return true;
+}
+} // namespace
+
 //------------------------------------------------------------------------------------------
 class vtkGlobeRasterReader::vtkInternals
 {
@@ -1353,18 +1399,34 @@ public:
   vtkMTimeType KeptTime = 0;
 
   /// Sets Steps from Series; the reason when the times cannot be time steps, else "".
-  std::string OrderSteps()
+  std::string OrderSteps(bool datesFromNames)
   {
     this->Steps = this->Series;
-    const auto timed = std::count_if(
-      this->Steps.begin(), this->Steps.end(), [](const Step& step) { return step.Timed; });
+    const auto countTimed = [this]() {
+      return std::count_if(
+        this->Steps.begin(), this->Steps.end(), [](const Step& step) { return step.Timed; });
+    };
+    auto timed = countTimed();
     if (timed == 0)
     {
-      for (size_t i = 0; i < this->Steps.size(); ++i)
+      // Dated files (every name holds a date) are at their dates, in decimal years; others at
+      // their positions.
+      bool dated = datesFromNames;
+      for (size_t i = 0; dated && i < this->Steps.size(); ++i)
       {
-        this->Steps[i].Time = static_cast<double>(i);
+        dated = DecimalYearInName(this->Steps[i].File, this->Steps[i].Time);
+        this->Steps[i].Timed = dated;
       }
-      return "";
+      if (!dated)
+      {
+        for (size_t i = 0; i < this->Steps.size(); ++i)
+        {
+          this->Steps[i].Time = static_cast<double>(i);
+          this->Steps[i].Timed = false;
+        }
+        return "";
+      }
+      timed = countTimed();
     }
     if (static_cast<size_t>(timed) != this->Steps.size())
     {
@@ -1918,7 +1980,7 @@ int vtkGlobeRasterReader::RequestInformation(
   if (series)
   {
     // The time values: the files' own, or their positions in the series.
-    const std::string why = in.OrderSteps();
+    const std::string why = in.OrderSteps(this->TimeFromFileNames);
     if (!why.empty())
     {
       in.Reading = in.Series.front().File;
@@ -2249,6 +2311,7 @@ void vtkGlobeRasterReader::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   const vtkInternals& in = *this->Internals;
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "TimeFromFileNames: " << (this->TimeFromFileNames ? "On" : "Off") << "\n";
   os << indent << "FileNames: " << in.Series.size() << (in.Series.empty() ? "\n" : ":\n");
   for (const auto& step : in.Series)
   {

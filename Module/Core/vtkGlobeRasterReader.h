@@ -94,8 +94,8 @@ public:
    * with that step's own time. VTK's executive runs the reader again for any new time; within
    * the step last read, it gives the same arrays again without decoding anything. Times are
    * those given with the files (in any order; the steps are sorted by them, and two files may
-   * not share one), or the files' positions 0, 1, 2... when none is given; a series with times
-   * for only some files is refused. Every file must share the first step's size, samples and
+   * not share one); when none is given, the dates the files' names hold (TimeFromFileNames),
+   * else the files' positions 0, 1, 2...; a series with times for only some files is refused. Every file must share the first step's size, samples and
    * georeferencing: a file that does not is an error naming both files and the difference.
    * While a series is given, FileName is ignored. Documentation/pipelines.md, "Time".
    */
@@ -105,6 +105,15 @@ public:
   int GetNumberOfFileNames();
   /// The i-th file as added (not sorted by time); nullptr out of range.
   const char* GetSeriesFileName(int i);
+  /**
+   * For a series given without times: when every file's name holds a date (YYYY-MM-DD,
+   * YYYYMMDD, YYYY_MM_DD, or YYYY-MM for the month's first day), the steps are those dates as
+   * decimal years (sst_2026-04-01.tif is at 2026 + 90/365 = 2026.2466), in date order;
+   * otherwise, or with this off, at the files' positions. Default on.
+   */
+  vtkSetMacro(TimeFromFileNames, bool);
+  vtkGetMacro(TimeFromFileNames, bool);
+  vtkBooleanMacro(TimeFromFileNames, bool);
   ///@}
 
   ///@{
@@ -162,6 +171,7 @@ protected:
   char* FileName = nullptr;
   int EPSG = 0;
   int MaximumMemory = 2048;
+  bool TimeFromFileNames = true;
 
 private:
   vtkGlobeRasterReader(const vtkGlobeRasterReader&) = delete;

@@ -7,7 +7,8 @@
 //   its file (GlobeFileName), its values and DATA_TIME_STEP, the step's own time.
 // - The same time again runs nothing; another time within the step last read runs the reader
 //   but gives the same arrays (nothing decoded).
-// - Files without times are steps 0, 1, 2; a single file announces no time.
+// - Files without times are steps 0, 1, 2, or the dates their names hold (decimal years, leap
+//   years counted) when every name holds one; a single file announces no time.
 // - The layer follows UpdateTime by the step's own time: another time within a step loads
 //   nothing, a new step loads once; GetDataTime is the step's time.
 // - Refused, each with an error that names the problem: times for some files only, two files
@@ -190,6 +191,46 @@ int TestGlobeRasterReaderSeries(int, char*[])
     single->UpdateInformation();
     Expect(!single->GetOutputInformation(0)->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()),
       "a single file announces no time");
+  }
+
+  // Dated names: the dates as decimal years, in date order.
+  {
+    const std::string april = WriteStep("sst_2026-04-01", 1);
+    const std::string january = WriteStep("sst_20260101", 0);
+    const std::string july = WriteStep("sst_2026_07", 2); // a month: its first day
+    const std::string leap = WriteStep("sst_2024-12-31", 0);
+    vtkNew<vtkGlobeRasterReader> dated;
+    dated->AddFileName(april.c_str());
+    dated->AddFileName(july.c_str());
+    dated->AddFileName(january.c_str());
+    dated->AddFileName(leap.c_str());
+    dated->UpdateInformation();
+    vtkInformation* datedInfo = dated->GetOutputInformation(0);
+    const double* d = datedInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    const int m = datedInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    const double expected[4] = { 2024.0 + 365.0 / 366.0, 2026.0, 2026.0 + 90.0 / 365.0,
+      2026.0 + 181.0 / 365.0 };
+    bool same = m == 4 && d;
+    for (int k = 0; same && k < 4; ++k)
+    {
+      same = std::abs(d[k] - expected[k]) < 1e-12;
+    }
+    const Output april1 = ReadAt(dated, 2026.3);
+    Expect(same && april1.File == april,
+      vtkGlobeTest::Printf("dated names: steps %.4f, %.4f, %.4f, %.4f (2024-12-31, 2026-01-01, "
+                           "2026-04-01, 2026-07); 2026.3 reads 2026-04-01",
+        m > 0 ? d[0] : NAN, m > 1 ? d[1] : NAN, m > 2 ? d[2] : NAN, m > 3 ? d[3] : NAN));
+    dated->TimeFromFileNamesOff();
+    dated->UpdateInformation();
+    const double* off = datedInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    Expect(off && off[0] == 0.0 && off[3] == 3.0, "TimeFromFileNames off: positions 0..3");
+    dated->TimeFromFileNamesOn();
+    dated->AddFileName(steps[0].c_str()); // a name without a date
+    dated->UpdateInformation();
+    const double* mixed = datedInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    Expect(mixed && datedInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()) == 5 &&
+        mixed[0] == 0.0 && mixed[4] == 4.0,
+      "one name without a date: the files' positions 0..4");
   }
 
   // The layer by the step's own time.
