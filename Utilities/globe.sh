@@ -124,7 +124,7 @@ full_stacks_env=(ASAN_OPTIONS="$asan_options:fast_unwind_on_malloc=0")
 
 # The CI's part of the sanitizer suite: the Core module alone (no rendering), its
 # reader/layer/page-source tests and the fuzz corpus replays (Documentation/reliability.md).
-sanitizer_ci_tests='^(Fuzz\.Replay\..*|Core\.TestGlobe(RasterReader|RasterReaderHardening|LayerBadInput|LayerRead|LayerLevels|PageSource))$'
+sanitizer_ci_tests='^(Fuzz\.Replay\..*|Core\.TestGlobe(RasterReader|RasterReaderHardening|RasterReaderSeries|LayerBadInput|LayerRead|LayerLevels|PageSource))$'
 run_sanitizer_ci() {
   local dir="${VTKGLOBE_CHECK_CORE_DIR:-$root/build-check-core}"
   configure_sanitized "$dir" -DVTKGLOBE_BUILD_RENDERING=OFF
