@@ -8,6 +8,7 @@
 #include "vtkDataArray.h"
 #include "vtkGlobeLayer.h"
 #include "vtkNew.h"
+#include "vtkGlobeErrorTestHelpers.h"
 #include "vtkTestErrorObserver.h"
 
 #include <OpenImageIO/imageio.h>
@@ -33,25 +34,10 @@ void Expect(bool condition, const std::string& what)
 const std::string Data = VTKGLOBE_DATA_DIR;
 const std::string Temp = VTKGLOBE_TEMP_DIR;
 
-/// True when the last error contains every one of the words; prints the message.
+/// The shared check, printing from the layer's name on.
 bool ErrorSaid(vtkTest::ErrorObserver* observer, const std::vector<std::string>& words)
 {
-  bool said = observer->GetError();
-  const std::string message = observer->GetErrorMessage();
-  for (const std::string& w : words)
-  {
-    said = said && message.find(w) != std::string::npos;
-  }
-  // vtkErrorMacro's text starts with the source location; print from the message itself.
-  const size_t start = message.find("vtkGlobeLayer");
-  std::string shown = message.substr(start == std::string::npos ? 0 : start);
-  while (!shown.empty() && (shown.back() == '\n' || shown.back() == ' '))
-  {
-    shown.pop_back();
-  }
-  std::printf("       error: %s\n", shown.c_str());
-  observer->Clear();
-  return said;
+  return vtkGlobeTest::ErrorSaid(observer, words, "vtkGlobeLayer");
 }
 
 /// No data is kept: what a failed layer must look like.

@@ -13,11 +13,11 @@
 //   nothing, a new step loads once; GetDataTime is the step's time.
 // - Refused, each with an error that names the problem: times for some files only, two files
 //   at one time, a NaN time.
+#include "vtkGlobeErrorTestHelpers.h"
 #include "vtkGlobeLayer.h"
 #include "vtkGlobeRasterReader.h"
 #include "vtkGlobeTestHelpers.h"
 
-#include "vtkCallbackCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkImageData.h"
@@ -26,7 +26,6 @@
 #include "vtkPointData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
-#include "vtkTestErrorObserver.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -66,21 +65,6 @@ std::string WriteStep(const std::string& name, int k)
   return path;
 }
 
-/// Counts an algorithm's executions.
-struct ExecutionCounter
-{
-  int Count = 0;
-  vtkNew<vtkCallbackCommand> Command;
-  explicit ExecutionCounter(vtkAlgorithm* algorithm)
-  {
-    this->Command->SetClientData(this);
-    this->Command->SetCallback([](vtkObject*, unsigned long, void* self, void*) {
-      ++static_cast<ExecutionCounter*>(self)->Count;
-    });
-    algorithm->AddObserver(vtkCommand::EndEvent, this->Command);
-  }
-};
-
 /// What the reader's output is after an update at `time`.
 struct Output
 {
@@ -110,19 +94,6 @@ Output ReadAt(vtkGlobeRasterReader* reader, double time)
   return o;
 }
 
-bool Said(vtkTest::ErrorObserver* observer, const std::vector<std::string>& words)
-{
-  const std::string message = observer->GetError() ? observer->GetErrorMessage() : "";
-  bool all = !message.empty();
-  for (const auto& w : words)
-  {
-    all = all && message.find(w) != std::string::npos;
-  }
-  const size_t from = message.find("Cannot");
-  std::printf("    said: %s\n", from == std::string::npos ? "(nothing)" : message.substr(from).c_str());
-  observer->Clear();
-  return all;
-}
 } // namespace
 
 int TestGlobeRasterReaderSeries(int, char*[])
@@ -134,7 +105,7 @@ int TestGlobeRasterReaderSeries(int, char*[])
   reader->AddFileName(steps[2].c_str(), Times[2]);
   reader->AddFileName(steps[0].c_str(), Times[0]);
   reader->AddFileName(steps[1].c_str(), Times[1]);
-  ExecutionCounter executions(reader);
+  vtkGlobeTest::ExecutionCounter executions(reader);
   reader->UpdateInformation();
   vtkInformation* info = reader->GetOutputInformation(0);
   const int n = info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
@@ -264,18 +235,18 @@ int TestGlobeRasterReaderSeries(int, char*[])
   bad->AddFileName(steps[0].c_str(), 1.0);
   bad->AddFileName(steps[1].c_str());
   bad->UpdateInformation();
-  Expect(Said(errors, { "times for 1 of its 2 files" }), "times for some files only: refused");
+  Expect(vtkGlobeTest::ErrorSaid(errors, { "times for 1 of its 2 files" }), "times for some files only: refused");
   bad->RemoveAllFileNames();
   bad->AddFileName(steps[0].c_str(), 1.0);
   bad->AddFileName(steps[1].c_str(), 1.0);
   bad->UpdateInformation();
-  Expect(Said(errors, { "two files have the time 1", "series_core_a", "series_core_b" }),
+  Expect(vtkGlobeTest::ErrorSaid(errors, { "two files have the time 1", "series_core_a", "series_core_b" }),
     "two files at one time: refused, naming both");
   bad->RemoveAllFileNames();
   bad->AddFileName(steps[0].c_str(), 1.0);
   bad->AddFileName(steps[1].c_str(), NAN);
   bad->UpdateInformation();
-  Expect(Said(errors, { "the time of", "series_core_b", "not a finite number" }),
+  Expect(vtkGlobeTest::ErrorSaid(errors, { "the time of", "series_core_b", "not a finite number" }),
     "a NaN time: refused, naming the file");
   return Checks.Result();
 }

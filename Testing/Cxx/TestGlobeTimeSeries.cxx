@@ -8,13 +8,12 @@
 //   the same step uploads and reads nothing.
 // - Bad steps: a file whose grid differs from the first step's, a missing file: each an error
 //   naming the problem; the other steps and the rest of the scene still render.
+#include "vtkGlobeErrorTestHelpers.h"
 #include "vtkGlobeLayerSet.h"
 #include "vtkGlobeRasterReader.h"
 #include "vtkGlobeRenderingTestHelpers.h"
 #include "vtkGlobeTestHelpers.h"
 
-#include "vtkCallbackCommand.h"
-#include "vtkTestErrorObserver.h"
 
 namespace
 {
@@ -44,20 +43,6 @@ std::string WriteStep(const std::string& name, int k, int w = 64, int h = 32)
   return png;
 }
 
-/// Counts a reader's executions (RequestData runs).
-struct ExecutionCounter
-{
-  int Count = 0;
-  vtkNew<vtkCallbackCommand> Command;
-  explicit ExecutionCounter(vtkAlgorithm* algorithm)
-  {
-    this->Command->SetClientData(this);
-    this->Command->SetCallback(
-      [](vtkObject*, unsigned long, void* self, void*) { ++static_cast<ExecutionCounter*>(self)->Count; });
-    algorithm->AddObserver(vtkCommand::EndEvent, this->Command);
-  }
-};
-
 /// The number of bytes that differ between two frames.
 int Differing(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)
 {
@@ -69,18 +54,6 @@ int Differing(const std::vector<unsigned char>& a, const std::vector<unsigned ch
   return n;
 }
 
-bool Said(vtkTest::ErrorObserver* observer, const std::vector<std::string>& words)
-{
-  const std::string message = observer->GetError() ? observer->GetErrorMessage() : "";
-  bool all = !message.empty();
-  for (const auto& w : words)
-  {
-    all = all && message.find(w) != std::string::npos;
-  }
-  std::printf("    said: %s\n", message.empty() ? "(nothing)" : message.substr(message.find("Cannot")).c_str());
-  observer->Clear();
-  return all;
-}
 } // namespace
 
 int TestGlobeTimeSeries(int, char*[])
@@ -92,7 +65,7 @@ int TestGlobeTimeSeries(int, char*[])
   reader->AddFileName(steps[2].c_str(), Times[2]);
   reader->AddFileName(steps[0].c_str(), Times[0]);
   reader->AddFileName(steps[1].c_str(), Times[1]);
-  ExecutionCounter executions(reader);
+  vtkGlobeTest::ExecutionCounter executions(reader);
 
   // A colour layer fed by the series, over static heights, against a globe reading each step's
   // file directly.
@@ -177,8 +150,8 @@ int TestGlobeTimeSeries(int, char*[])
     "a series without times: step 0 at time 0, the frame is the first file's");
   series->SetUpdateTime(1.0);
   scene.Render();
-  const bool coarseSaid = Said(errors, { "series_coarse", "does not match the first step", "series_a",
-                                          "32 x 16", "not 64 x 32" });
+  const bool coarseSaid = vtkGlobeTest::ErrorSaid(errors,
+    { "series_coarse", "does not match the first step", "series_a", "32 x 16", "not 64 x 32" });
   layerErrors->Clear();
   Expect(coarseSaid && !series->IsValid() && heights->IsValid() &&
       vtkGlobeTest::CoveredPixels(vtkGlobeTest::ReadDepth(scene.Window)) > 10000,
@@ -186,7 +159,8 @@ int TestGlobeTimeSeries(int, char*[])
     "the heights and the globe still render");
   series->SetUpdateTime(2.0);
   scene.Render();
-  Expect(Said(errors, { "series_missing", "does not exist" }) && !series->IsValid() &&
+  Expect(vtkGlobeTest::ErrorSaid(errors, { "series_missing", "does not exist" }) &&
+      !series->IsValid() &&
       vtkGlobeTest::CoveredPixels(vtkGlobeTest::ReadDepth(scene.Window)) > 10000,
     "a missing file: an error naming it; the globe still renders");
   layerErrors->Clear();
