@@ -115,9 +115,7 @@ std::map<vtkPVRenderView*, std::weak_ptr<vtkGlobeRepresentationGlobe>>& Globes()
 //------------------------------------------------------------------------------------------
 vtkGlobeRepresentation::vtkGlobeRepresentation()
 {
-  // Settings are stamped only when changed here (ParaView's initial pushes of the defaults
-  // change nothing), so a representation joining a globe does not undo the settings in force.
-  this->Layer->SetRoleToHeight();
+  this->Layer->SetRoleToHeight(); // until its data says otherwise (ApplyLayerRole)
 }
 
 vtkGlobeRepresentation::~vtkGlobeRepresentation()
@@ -299,6 +297,8 @@ void vtkGlobeRepresentation::SetVisibility(bool visible)
 }
 
 //------------------------------------------------------------------------------------------
+// A setting is stamped only when changed here (ParaView's initial pushes of the defaults
+// change nothing), so a representation joining a globe does not undo the settings in force.
 void vtkGlobeRepresentation::GlobeSettingChanged(int setting)
 {
   vtkTimeStamp now;

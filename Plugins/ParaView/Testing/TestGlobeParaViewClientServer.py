@@ -15,18 +15,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from paraview.simple import Connect, LoadPlugin, Render, SaveScreenshot  # noqa: E402
 import globe_scene  # noqa: E402
 
-PLUGIN = os.environ["VTKGLOBE_PARAVIEW_PLUGIN"]
-DATA = os.environ["VTKGLOBE_DATA_DIR"]
-OUTPUT = os.environ["VTKGLOBE_PARAVIEW_OUTPUT"]
-BASELINE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "Baseline",
-                        "TestGlobeParaViewRepresentation.png")
-failures = []
-
-
-def expect(condition, what):
-    print("%s %s" % ("ok  " if condition else "FAIL", what))
-    if not condition:
-        failures.append(what)
+from globe_scene import PLUGIN, DATA, OUTPUT, BASELINE, THRESHOLD, expect, failures  # noqa: E402
 
 
 with socket.socket() as probe:
@@ -56,8 +45,8 @@ for mode, threshold in (("remote", 0.0), ("local", 1e9)):
     path = os.path.join(OUTPUT, "globe-client-server-%s.png" % mode)
     SaveScreenshot(path, view, ImageResolution=globe_scene.SIZE)
     error = globe_scene.image_error(path, BASELINE)
-    expect(error <= 0.15, "rendered on the %s: error %.4f against the baseline "
-           "(threshold 0.15)" % ("server" if mode == "remote" else "client", error))
+    expect(error <= THRESHOLD, "rendered on the %s: error %.4f against the baseline "
+           "(threshold %.2f)" % ("server" if mode == "remote" else "client", error, THRESHOLD))
 globe_scene.close(view)
 
 print("%d failure(s)" % len(failures))

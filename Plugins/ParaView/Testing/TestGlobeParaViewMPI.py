@@ -106,13 +106,12 @@ SaveScreenshot(two, scene["view"], ImageResolution=globe_scene.SIZE)  # rank 0 w
 comm.Barrier()
 if comm.rank == 0:
     one = os.path.join(OUTPUT, "globe-1rank.png")
-    baseline = os.path.join(os.path.dirname(os.path.abspath(__file__)), "Baseline",
-                            "TestGlobeParaViewRepresentation.png")
     to_one = globe_scene.image_error(two, one) if os.path.exists(one) else float("inf")
-    to_baseline = globe_scene.image_error(two, baseline)
-    expect(to_one <= 0.15 and to_baseline <= 0.15,
+    to_baseline = globe_scene.image_error(two, globe_scene.BASELINE)
+    threshold = globe_scene.THRESHOLD
+    expect(to_one <= threshold and to_baseline <= threshold,
            "the 2-rank picture against the 1-rank one: error %.4f; against the baseline: %.4f "
-           "(threshold 0.15)" % (to_one, to_baseline))
+           "(threshold %.2f)" % (to_one, to_baseline, threshold))
 globe_scene.close(scene["view"])
 
 total = comm.allreduce(len(failures))

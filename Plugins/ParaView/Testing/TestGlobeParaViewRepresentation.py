@@ -22,19 +22,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from paraview.simple import LoadPlugin, SaveScreenshot, Render  # noqa: E402
 import globe_scene  # noqa: E402
 
-PLUGIN = os.environ["VTKGLOBE_PARAVIEW_PLUGIN"]
-DATA = os.environ["VTKGLOBE_DATA_DIR"]
-OUTPUT = os.environ["VTKGLOBE_PARAVIEW_OUTPUT"]
-BASELINE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "Baseline",
-                        "TestGlobeParaViewRepresentation.png")
-THRESHOLD = 0.15
-failures = []
-
-
-def expect(condition, what):
-    print("%s %s" % ("ok  " if condition else "FAIL", what))
-    if not condition:
-        failures.append(what)
+from globe_scene import PLUGIN, DATA, OUTPUT, BASELINE, THRESHOLD, expect, failures  # noqa: E402
 
 
 def property_value(display, name):

@@ -14,6 +14,22 @@ from paraview.simple import (CreateRenderView, Cone, Sphere, Wavelet, Transform,
                              ColorBy, Render)
 
 SIZE = [400, 300]
+# What the plugin's tests share: the plugin, the data, where pictures go, the scene's baseline
+# and VTK's regression threshold for it.
+PLUGIN = os.environ.get("VTKGLOBE_PARAVIEW_PLUGIN", "")
+DATA = os.environ.get("VTKGLOBE_DATA_DIR", "Data")
+OUTPUT = os.environ.get("VTKGLOBE_PARAVIEW_OUTPUT", ".")
+BASELINE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "Baseline",
+                        "TestGlobeParaViewRepresentation.png")
+THRESHOLD = 0.15
+failures = []
+
+
+def expect(condition, what, prefix=""):
+    """One check: printed "ok"/"FAIL" with what it asserts; failures are collected."""
+    print("%s%s %s" % (prefix, "ok  " if condition else "FAIL", what))
+    if not condition:
+        failures.append(what)
 CAMERA = dict(CameraPosition=[2.5e7, 0.8e7, 0.6e7], CameraFocalPoint=[0.0, 0.0, 0.0],
               CameraViewUp=[0.0, 0.0, 1.0], CameraViewAngle=30.0)
 
