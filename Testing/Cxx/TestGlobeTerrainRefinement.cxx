@@ -12,9 +12,11 @@
 //     the scene's depth mode.
 //  D. C in perspective depth without high-precision geodetic coordinates: the refinement is
 //     off there (float unit directions carry 0.4 m of noise), picture and depth unchanged.
+//  E. 2 m above the ground west of Rainier looking up at the summit: rays that climb meet the
+//     slopes they see from below, where a step for level terrain would go the wrong way.
 // Requirement: refinement divides the median and the 95th percentile of |dh| by at least 4 and
-// 2 in A (the rest is visibility: the ray's first hit lies behind a ridge the mesh does not
-// have, or the mesh has one the data do not), by 50 in B and C; with refinement the error no
+// 2 in A and E (the rest is visibility: the ray's first hit lies behind a ridge the mesh does
+// not have, or the mesh has one the data do not), by 50 in B and C; with refinement the error no
 // longer grows with the grid's cells (A at grid 64 within 2x of grid 256). The layers are
 // read at full resolution (footprint filtering off), as the reference reads them.
 #include "vtkGlobeRenderingTestHelpers.h"
@@ -162,6 +164,19 @@ int TestGlobeTerrainRefinement(int, char*[])
     const bool same = depthOff == vtkGlobeTest::ReadDepth(scene.Window) &&
       rgbOff == vtkGlobeTest::ReadPixels(scene.Window);
     Check.Expect(same, "float directions: refinement asked for, the mesh's picture and depth kept");
+  }
+  std::printf("E. Along the ground, looking up at Rainier from 2 m above its western foot:\n");
+  {
+    vtkGlobeTest::Scene scene(300, 225, 128);
+    scene.AddEarthLayers();
+    const double lon = -121.95, lat = 46.85;
+    const double ground =
+      vtkGlobeTest::ComposedHeight(vtkGlobeTest::HeightLayers(scene.Mapper), lon, lat);
+    const double camera[3] = { lon, lat, ground + 2.0 };
+    scene.Look(camera, summit, 40.0, 1.0, 1.0e6);
+    // The rays climb: each meets the slope it sees from below (the benchmark's satellite
+    // scene). Steps that need a descending ray left every such pixel on the mesh.
+    Compare("looking up the slope", scene, 4.0, 2.0);
   }
   return Check.Result();
 }

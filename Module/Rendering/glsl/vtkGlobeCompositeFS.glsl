@@ -145,10 +145,13 @@ void main()
       float rayNorth = dot(ray, north);
       // d(height - data)/dt: the ray's descent less the terrain's rise along it.
       float rate = rayUp - gradient.x / (vertical * cosLat) * rayEast - gradient.y / meridian * rayNorth;
-      // Newton where the ray enters the terrain clearly; along a back slope (or where the
-      // slope would send the step the wrong way) the step for level terrain instead.
-      bool step = refine && rayUp < -1e-3 && abs(lat) < 1.5707;
-      float dt = step ? -(height - h) / (rate < 0.25 * rayUp ? rate : rayUp) : 0.0;
+      // Newton where the ray enters the terrain clearly. A descending ray on a back slope (or
+      // where the slope would send the step the wrong way) takes the step for level terrain
+      // instead. A climbing ray (along the ground, at a slope seen from below) has no such
+      // step: Newton where the terrain rises clearly faster than the ray, else no step.
+      bool descending = rayUp < -1e-3;
+      bool step = refine && abs(lat) < 1.5707 && (descending || rate < -0.02);
+      float dt = step ? -(height - h) / (descending && !(rate < 0.25 * rayUp) ? rayUp : rate) : 0.0;
       float dEast = dt * rayEast;
       float dNorth = dt * rayNorth;
       float dLon = dEast / (vertical * cosLat);
