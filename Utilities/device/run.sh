@@ -10,6 +10,9 @@
 #   WINDOWS="..." otherwise, --grid-only in these windows (default 800x600 1600x1200 400x300)
 #   COST=1        also GlobeCostBenchmark (cost.json)
 #   BENCH_ARGS    more arguments for GlobeBenchmark; TLIM: seconds per benchmark (default 150)
+#   AB=DIR        instead: GlobeBenchmark $BENCH_ARGS with the packed libraries (a1), with the
+#                 libraries in DIR (relative to the tree, e.g. a rebuilt libvtkGlobeRendering.so.1)
+#                 ahead of them (b), and packed again (a2): before and after in one run
 #   FORCE_MESA=1  render with the carried Mesa (softpipe) instead: a dry run on any machine
 set -u
 R="$PWD"
@@ -52,7 +55,17 @@ export GLIBC_TUNABLES=glibc.malloc.mmap_threshold=268435456:glibc.malloc.trim_th
 bench() { timeout "${TLIM:-150}" "$LD" --library-path "$LP" "$@"; }
 renderer=$(sed -n 's/.*renderer string: //p' /tmp/glx.txt)
 conditions="$renderer (Utilities/device/run.sh: Xvfb, glvnd's NVIDIA GLX; the Debian 12 runtime carried; glibc malloc tuned)"
-if [ -n "${FULL:-}" ]; then
+if [ -n "${AB:-}" ]; then
+  for run in a1 b a2; do
+    echo "== $run"
+    lp=$LP
+    [ "$run" = b ] && lp="$R/$AB:$LP"
+    timeout "${TLIM:-150}" "$LD" --library-path "$lp" "$G/bin/GlobeBenchmark" \
+      --conditions "$conditions; $run" --json "$OUT/$run.json" ${BENCH_ARGS:-} > "$OUT/$run.txt" 2>&1
+    echo "rc $?"
+    grep -E '^(== |baseline|refinement|grid |naive)' "$OUT/$run.txt"
+  done
+elif [ -n "${FULL:-}" ]; then
   echo "== full"
   bench "$G/bin/GlobeBenchmark" --conditions "$conditions" --json "$OUT/full.json" \
     ${BENCH_ARGS:-} > "$OUT/full.txt" 2>&1
