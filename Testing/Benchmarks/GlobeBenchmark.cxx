@@ -69,8 +69,8 @@
 // JSON schema (schema 2):
 // {
 //   "benchmark": "GlobeBenchmark", "schema": 2, "date": UTC, "conditions": free text,
-//   "machine": {"gl_renderer", "gl_version", "gl_vendor", "cpu", "cpu_threads", "timer_queries",
-//               "loadavg_start", "loadavg_end"},
+//   "machine": {"gl_renderer", "gl_version", "gl_vendor", "depth_buffer", "cpu", "cpu_threads",
+//               "timer_queries", "loadavg_start", "loadavg_end"},
 //   "settings": {"quick", "frames", "warmup", "window": [w, h], "seconds_per_configuration",
 //                "minimum_frames", "samples_target"},
 //   "total_seconds": s, "notes": [text],
@@ -115,7 +115,9 @@
 #include "vtkImageData.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
+#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderTimer.h"
+#include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -492,6 +494,40 @@ std::string GLString(GLenum name)
   return s ? reinterpret_cast<const char*>(s) : "unknown";
 }
 
+/// The depth buffer that the error measurements read (VTK's render framebuffer, where the
+/// window has one): its bits and component type. Renderers differ here (an unsigned
+/// normalized 32-bit request may be served with 24 bits), and the depth modes' floors with it.
+std::string DepthBufferFormat(vtkRenderWindow* window)
+{
+  auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
+  if (!gl)
+  {
+    return "unknown";
+  }
+  gl->MakeCurrent();
+  GLint previous = 0;
+  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previous);
+  vtkOpenGLFramebufferObject* fbo = gl->GetRenderFramebuffer();
+  GLint bits = 0, type = 0;
+  if (fbo && fbo->GetFBOIndex() != 0)
+  {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo->GetFBOIndex());
+    glGetFramebufferAttachmentParameteriv(
+      GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &bits);
+    glGetFramebufferAttachmentParameteriv(
+      GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &type);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(previous));
+  }
+  else
+  {
+    bits = gl->GetDepthBufferSize();
+  }
+  const char* kind = type == GL_FLOAT ? " float"
+    : type == GL_UNSIGNED_NORMALIZED ? " unorm"
+                                     : "";
+  return std::to_string(bits) + "-bit" + kind;
+}
+
 std::string CpuModel()
 {
   std::ifstream cpuinfo("/proc/cpuinfo");
@@ -724,6 +760,7 @@ private:
   std::vector<std::string> Notes;
   std::vector<Comparison> Comparisons;
   std::string Renderer, Version, Vendor;
+  std::string DepthBuffer; // the depth that GetZbufferData reads: bits and type
   std::string LoadStart = LoadAverage();
   Clock::time_point Start = Clock::now();
 };
@@ -786,6 +823,7 @@ void Benchmark::Prepare()
   this->Renderer = GLString(GL_RENDERER);
   this->Version = GLString(GL_VERSION);
   this->Vendor = GLString(GL_VENDOR);
+  this->DepthBuffer = DepthBufferFormat(this->Scene.Window);
 }
 
 /// The mapper's defaults and the layers as loaded; the depth pass in Default mode, the policy.
@@ -1828,8 +1866,9 @@ void Benchmark::RunMatrix()
 
 void Benchmark::PrintTables()
 {
-  std::printf("\nGlobeBenchmark: %s (%s), %s, %u CPU threads\n", this->Renderer.c_str(),
-    this->Version.c_str(), CpuModel().c_str(), std::thread::hardware_concurrency());
+  std::printf("\nGlobeBenchmark: %s (%s), depth buffer %s, %s, %u CPU threads\n",
+    this->Renderer.c_str(), this->Version.c_str(), this->DepthBuffer.c_str(), CpuModel().c_str(),
+    std::thread::hardware_concurrency());
   std::printf("Frame: median wall ms (Render + glFinish), IQR; stages: median GPU ms. Terrain: "
               "p95 over the samples (px on screen, m along the ray); reg/jit: p95 px.\n");
   const char* header =
@@ -1978,7 +2017,8 @@ bool Benchmark::WriteJson(double totalSeconds)
   j << "  \"conditions\": " << JsonString(this->Opt.Conditions) << ",\n";
   j << "  \"machine\": {\"gl_renderer\": " << JsonString(this->Renderer)
     << ", \"gl_version\": " << JsonString(this->Version)
-    << ", \"gl_vendor\": " << JsonString(this->Vendor) << ", \"cpu\": " << JsonString(CpuModel())
+    << ", \"gl_vendor\": " << JsonString(this->Vendor)
+    << ", \"depth_buffer\": " << JsonString(this->DepthBuffer) << ", \"cpu\": " << JsonString(CpuModel())
     << ", \"cpu_threads\": " << std::thread::hardware_concurrency()
     << ", \"timer_queries\": " << (vtkOpenGLRenderTimer::IsSupported() ? "true" : "false")
     << ", \"loadavg_start\": " << JsonString(this->LoadStart)

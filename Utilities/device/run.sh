@@ -13,6 +13,7 @@
 #   AB=DIR        instead: GlobeBenchmark $BENCH_ARGS with the packed libraries (a1), with the
 #                 libraries in DIR (relative to the tree, e.g. a rebuilt libvtkGlobeRendering.so.1)
 #                 ahead of them (b), and packed again (a2): before and after in one run
+#   BENCH_BIN=F   run this GlobeBenchmark (relative to the tree) instead of the packed one
 #   FORCE_MESA=1  render with the carried Mesa (softpipe) instead: a dry run on any machine
 set -u
 R="$PWD"
@@ -53,6 +54,8 @@ if [ -z "${FORCE_MESA:-}" ] && ! grep -q NVIDIA /tmp/glx.txt; then
 fi
 export GLIBC_TUNABLES=glibc.malloc.mmap_threshold=268435456:glibc.malloc.trim_threshold=536870912
 bench() { timeout "${TLIM:-150}" "$LD" --library-path "$LP" "$@"; }
+B="$G/bin/GlobeBenchmark"
+[ -n "${BENCH_BIN:-}" ] && B="$R/$BENCH_BIN"
 renderer=$(sed -n 's/.*renderer string: //p' /tmp/glx.txt)
 conditions="$renderer (Utilities/device/run.sh: Xvfb, glvnd's NVIDIA GLX; the Debian 12 runtime carried; glibc malloc tuned)"
 if [ -n "${AB:-}" ]; then
@@ -60,21 +63,21 @@ if [ -n "${AB:-}" ]; then
     echo "== $run"
     lp=$LP
     [ "$run" = b ] && lp="$R/$AB:$LP"
-    timeout "${TLIM:-150}" "$LD" --library-path "$lp" "$G/bin/GlobeBenchmark" \
+    timeout "${TLIM:-150}" "$LD" --library-path "$lp" "$B" \
       --conditions "$conditions; $run" --json "$OUT/$run.json" ${BENCH_ARGS:-} > "$OUT/$run.txt" 2>&1
     echo "rc $?"
     grep -E '^(== |baseline|refinement|grid |naive)' "$OUT/$run.txt"
   done
 elif [ -n "${FULL:-}" ]; then
   echo "== full"
-  bench "$G/bin/GlobeBenchmark" --conditions "$conditions" --json "$OUT/full.json" \
+  bench "$B" --conditions "$conditions" --json "$OUT/full.json" \
     ${BENCH_ARGS:-} > "$OUT/full.txt" 2>&1
   echo "rc $?"
   grep -v '^ \|^\[' "$OUT/full.txt" | tail -150
 else
   for w in ${WINDOWS:-800x600 1600x1200 400x300}; do
     echo "== grid-only $w"
-    bench "$G/bin/GlobeBenchmark" --grid-only --window "$w" --scene rainier --scene everest \
+    bench "$B" --grid-only --window "$w" --scene rainier --scene everest \
       --scene earth --conditions "$conditions" --json "$OUT/grid-$w.json" ${BENCH_ARGS:-} \
       > "$OUT/grid-$w.txt" 2>&1
     echo "rc $?"
