@@ -852,6 +852,8 @@ void Benchmark::ResetDefaults()
   }
   this->Scene.Mapper->SetHighPrecisionGeodetic(this->Defaults->GetHighPrecisionGeodetic());
   this->Scene.Mapper->SetTerrainRefinement(this->Defaults->GetTerrainRefinement());
+  // No row changes it today; a row that does must not leak into the next scene's rows.
+  this->Scene.Mapper->SetFootprintFiltering(this->Defaults->GetFootprintFiltering());
 }
 
 /**
