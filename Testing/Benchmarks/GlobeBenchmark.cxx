@@ -494,8 +494,8 @@ std::string GLString(GLenum name)
   return s ? reinterpret_cast<const char*>(s) : "unknown";
 }
 
-/// The depth buffer that the error measurements read (VTK's render framebuffer, where the
-/// window has one): its bits and component type. Renderers differ here (an unsigned
+/// The depth buffer the scene is drawn into (VTK's render framebuffer, where the window has
+/// one; VTK 9.1 asks the same 32 bits for the framebuffers it blits to): bits and type. Renderers differ here (an unsigned
 /// normalized 32-bit request may be served with 24 bits), and the depth modes' floors with it.
 std::string DepthBufferFormat(vtkRenderWindow* window)
 {
@@ -760,7 +760,7 @@ private:
   std::vector<std::string> Notes;
   std::vector<Comparison> Comparisons;
   std::string Renderer, Version, Vendor;
-  std::string DepthBuffer; // the depth that GetZbufferData reads: bits and type
+  std::string DepthBuffer; // the render framebuffer's depth: bits and type
   std::string LoadStart = LoadAverage();
   Clock::time_point Start = Clock::now();
 };
