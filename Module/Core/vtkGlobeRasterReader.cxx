@@ -1402,11 +1402,8 @@ public:
   std::string OrderSteps(bool datesFromNames)
   {
     this->Steps = this->Series;
-    const auto countTimed = [this]() {
-      return std::count_if(
-        this->Steps.begin(), this->Steps.end(), [](const Step& step) { return step.Timed; });
-    };
-    auto timed = countTimed();
+    auto timed = std::count_if(
+      this->Steps.begin(), this->Steps.end(), [](const Step& step) { return step.Timed; });
     if (timed == 0)
     {
       // Dated files (every name holds a date) are at their dates, in decimal years; others at
@@ -1426,7 +1423,7 @@ public:
         }
         return "";
       }
-      timed = countTimed();
+      timed = static_cast<decltype(timed)>(this->Steps.size());
     }
     if (static_cast<size_t>(timed) != this->Steps.size())
     {

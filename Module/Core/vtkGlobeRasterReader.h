@@ -95,8 +95,9 @@ public:
    * the step last read, it gives the same arrays again without decoding anything. Times are
    * those given with the files (in any order; the steps are sorted by them, and two files may
    * not share one); when none is given, the dates the files' names hold (TimeFromFileNames),
-   * else the files' positions 0, 1, 2...; a series with times for only some files is refused. Every file must share the first step's size, samples and
-   * georeferencing: a file that does not is an error naming both files and the difference.
+   * else the files' positions 0, 1, 2...; a series with times for only some files is refused.
+   * Every file must share the first step's size, samples and georeferencing: a file that does
+   * not is an error naming both files and the difference.
    * While a series is given, FileName is ignored. Documentation/pipelines.md, "Time".
    */
   void AddFileName(const char* fileName);

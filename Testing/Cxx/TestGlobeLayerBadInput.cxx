@@ -6,9 +6,9 @@
 // crash. A Projected layer is not an error.
 #include "vtkGlobeTestHelpers.h"
 #include "vtkDataArray.h"
+#include "vtkGlobeErrorTestHelpers.h"
 #include "vtkGlobeLayer.h"
 #include "vtkNew.h"
-#include "vtkGlobeErrorTestHelpers.h"
 #include "vtkTestErrorObserver.h"
 
 #include <OpenImageIO/imageio.h>

@@ -43,7 +43,7 @@ void Expect(bool condition, const std::string& what)
 }
 
 const std::string Temp = VTKGLOBE_TEMP_DIR;
-const double Times[3] = { 2026.0, 2026.25, 2026.5 };
+const auto& Times = vtkGlobeTest::SeriesTimes;
 
 /// A global 8 x 4 float TIFF with a world file: step k holds 100 k + 0 .. 31.
 std::string WriteStep(const std::string& name, int k)
@@ -102,9 +102,7 @@ int TestGlobeRasterReaderSeries(int, char*[])
     WriteStep("series_core_c", 2) };
 
   vtkNew<vtkGlobeRasterReader> reader;
-  reader->AddFileName(steps[2].c_str(), Times[2]);
-  reader->AddFileName(steps[0].c_str(), Times[0]);
-  reader->AddFileName(steps[1].c_str(), Times[1]);
+  vtkGlobeTest::AddSeriesOutOfOrder(reader, steps);
   vtkGlobeTest::ExecutionCounter executions(reader);
   reader->UpdateInformation();
   vtkInformation* info = reader->GetOutputInformation(0);

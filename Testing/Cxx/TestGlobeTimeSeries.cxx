@@ -14,7 +14,6 @@
 #include "vtkGlobeRenderingTestHelpers.h"
 #include "vtkGlobeTestHelpers.h"
 
-
 namespace
 {
 vtkGlobeTest::Checklist Checks;
@@ -25,8 +24,7 @@ void Expect(bool condition, const std::string& what)
 }
 
 const std::string Temp = VTKGLOBE_TEMP_DIR;
-// Decimal years, given to the reader out of order.
-const double Times[3] = { 2026.0, 2026.25, 2026.5 };
+const auto& Times = vtkGlobeTest::SeriesTimes;
 
 /// A global w x h PNG with a world file (plate carree, WGS 84 degrees): step k's pattern.
 std::string WriteStep(const std::string& name, int k, int w = 64, int h = 32)
@@ -62,9 +60,7 @@ int TestGlobeTimeSeries(int, char*[])
     WriteStep("series_c", 2) };
 
   vtkNew<vtkGlobeRasterReader> reader;
-  reader->AddFileName(steps[2].c_str(), Times[2]);
-  reader->AddFileName(steps[0].c_str(), Times[0]);
-  reader->AddFileName(steps[1].c_str(), Times[1]);
+  vtkGlobeTest::AddSeriesOutOfOrder(reader, steps);
   vtkGlobeTest::ExecutionCounter executions(reader);
 
   // A colour layer fed by the series, over static heights, against a globe reading each step's

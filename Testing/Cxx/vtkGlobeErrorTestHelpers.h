@@ -1,10 +1,12 @@
-// Helpers for tests that watch what VTK objects report and how often algorithms run.
+// Helpers for tests that watch what VTK objects report and how often algorithms run, and the
+// time-series tests' shared set-up.
 #ifndef vtkGlobeErrorTestHelpers_h
 #define vtkGlobeErrorTestHelpers_h
 
 #include "vtkAlgorithm.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
+#include "vtkGlobeRasterReader.h"
 #include "vtkNew.h"
 #include "vtkTestErrorObserver.h"
 
@@ -53,6 +55,18 @@ struct ExecutionCounter
     algorithm->AddObserver(vtkCommand::EndEvent, this->Command);
   }
 };
+
+/// The series tests' step times (decimal years).
+constexpr double SeriesTimes[3] = { 2026.0, 2026.25, 2026.5 };
+
+/// A reader given the three step files out of order, each with its SeriesTimes entry (the
+/// reader must sort them).
+inline void AddSeriesOutOfOrder(vtkGlobeRasterReader* reader, const std::string (&steps)[3])
+{
+  reader->AddFileName(steps[2].c_str(), SeriesTimes[2]);
+  reader->AddFileName(steps[0].c_str(), SeriesTimes[0]);
+  reader->AddFileName(steps[1].c_str(), SeriesTimes[1]);
+}
 } // namespace vtkGlobeTest
 
 #endif

@@ -23,9 +23,9 @@
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
-#include <string>
 #include <map>
 #include <set>
+#include <string>
 
 vtkStandardNewMacro(vtkGlobeRepresentation);
 

@@ -27,16 +27,13 @@ from paraview.simple import LoadPlugin, SaveScreenshot  # noqa: E402
 import globe_scene  # noqa: E402
 from vtkmodules.vtkIOGDAL import vtkGDALRasterReader
 
+from globe_scene import PLUGIN, DATA, failures  # noqa: E402
+
 comm = MPI.COMM_WORLD
-PLUGIN = os.environ["VTKGLOBE_PARAVIEW_PLUGIN"]
-DATA = os.environ["VTKGLOBE_DATA_DIR"]
-failures = []
 
 
 def expect(condition, what):
-    print("rank %d: %s %s" % (comm.rank, "ok  " if condition else "FAIL", what))
-    if not condition:
-        failures.append(what)
+    globe_scene.expect(condition, what, "rank %d: " % comm.rank)
 
 
 expect(comm.size == 2, "%d MPI ranks" % comm.size)

@@ -23,21 +23,14 @@ import tempfile
 
 from paraview.simple import (LoadPlugin, GetAnimationScene, GetTimeKeeper, CreateRenderView,
                              Show, Render, Delete, SaveScreenshot)
-from vtkmodules.util.vtkConstants import VTK_UNSIGNED_CHAR
+from vtkmodules.util.vtkConstants import VTK_STRING, VTK_UNSIGNED_CHAR
 from vtkmodules.vtkCommonCore import vtkFloatArray
 from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkIOImage import vtkTIFFWriter
 from vtkmodules.util.misc import calldata_type
-from vtkmodules.util.vtkConstants import VTK_STRING
 
-PLUGIN = os.environ["VTKGLOBE_PARAVIEW_PLUGIN"]
-failures = []
-
-
-def expect(condition, what):
-    print("%s %s" % ("ok  " if condition else "FAIL", what))
-    if not condition:
-        failures.append(what)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from globe_scene import PLUGIN, expect, failures  # noqa: E402
 
 
 def write_global_tiff(folder, name, image):

@@ -30,6 +30,8 @@ def expect(condition, what, prefix=""):
     print("%s%s %s" % (prefix, "ok  " if condition else "FAIL", what))
     if not condition:
         failures.append(what)
+
+
 CAMERA = dict(CameraPosition=[2.5e7, 0.8e7, 0.6e7], CameraFocalPoint=[0.0, 0.0, 0.0],
               CameraViewUp=[0.0, 0.0, 1.0], CameraViewAngle=30.0)
 
