@@ -14,6 +14,12 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 build="${VTKGLOBE_BUILD_DIR:-$root/build}"
 bash "$root/Utilities/globe.sh" build
+# Beyond globe.sh's packages (binutils comes with g++, glxinfo with mesa-utils): xz.
+if ! command -v xz > /dev/null; then
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo=sudo
+  $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends xz-utils
+fi
 out="$root/.gk/gk.tar.xz"
 mkdir -p "$root/.gk"
 work="$(mktemp -d)"
