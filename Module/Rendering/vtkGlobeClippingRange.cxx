@@ -23,6 +23,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <queue>
 #include <vector>
 
 vtkStandardNewMacro(vtkGlobeClippingRange);
@@ -46,6 +48,7 @@ void OnReset(vtkObject* caller, unsigned long, void* clientData, void*)
 struct LocalTerrain
 {
   double Top = 0.0;    // tallest composed height in the window (m)
+  double Bottom = 0.0; // lowest composed height in the window (m)
   double Nadir = 0.0;  // composed height at the point (valid when Exact)
   double Slope = 0.0;  // steepest slope in the window (valid when Exact)
   bool Exact = false;  // one layer replaces all below over the whole window
@@ -56,16 +59,20 @@ struct LocalTerrain
  * vtkGlobeLayerSet's order (DrawOrder, then as added), each by its blend mode and weight
  * (coverage: extent, voids, an 8-texel feathered border; times opacity):
  * - Replace mixes towards the layer: one that covers the whole window with full weight decides
- *   the terrain there (its bilinear height at the point, its posts' maximum and slope); with
- *   less weight somewhere the result is at most the larger of the two maxima;
+ *   the terrain there (its bilinear height at the point, its extremes over the window and its
+ *   posts' slope); with less weight somewhere the result is at most the larger of the two
+ *   maxima (at least the smaller minimum);
  * - Add adds weight * value: the maximum grows by the layer's maximum (by its positive part
- *   where the weight may be below 1); with full weight the point and slope add exactly;
+ *   where the weight may be below 1), the minimum likewise; with full weight the point and
+ *   slope add exactly;
  * - Average (a run of layers replaced by their weighted mean) is at most the larger maximum.
  * Layers that cannot be sampled in longitude/latitude (projected ones, missing data) enter with
- * their data maximum by the same rules, so the near plane stays in front of them.
+ * their data's range by the same rules, so the near plane stays in front of them. `slopes`
+ * false leaves Slope 0 (it reads every post of the window twice more); windows wider than
+ * `texels` texels each way take the layer's range.
  */
 LocalTerrain ComputeLocalTerrain(vtkGlobeMapper* mapper, double lon, double lat, double radius,
-  double metresPerDegree)
+  double metresPerDegree, bool slopes = true, double texels = 64.0)
 {
   LocalTerrain result;
   result.Exact = true; // composition starts from 0 everywhere
@@ -81,27 +88,30 @@ LocalTerrain ComputeLocalTerrain(vtkGlobeMapper* mapper, double lon, double lat,
   }
   std::stable_sort(order.begin(), order.end(),
     [](vtkGlobeLayer* a, vtkGlobeLayer* b) { return a->GetDrawOrder() < b->GetDrawOrder(); });
-  // A layer's window maximum (and, with full weight, its point height and slope) into the
-  // result by its blend mode.
-  auto compose = [&result](vtkGlobeLayer* layer, bool fullWeight, double top, bool exact,
-                   double nadir, double slope) {
+  // A layer's window extremes (and, with full weight, its point height and slope) into the
+  // result by its blend mode; the lowest mirrors the tallest.
+  auto compose = [&result](vtkGlobeLayer* layer, bool fullWeight, double top, double bottom,
+                   bool exact, double nadir, double slope) {
     const bool full = fullWeight && layer->GetOpacity() >= 1.0;
     switch (layer->GetBlendMode())
     {
       case vtkGlobeLayer::Add:
         result.Top += full ? top : std::max(0.0, top);
+        result.Bottom += full ? bottom : std::min(0.0, bottom);
         result.Exact = result.Exact && full && exact;
         result.Nadir += nadir;
         result.Slope += slope;
         break;
       case vtkGlobeLayer::Average:
         result.Top = std::max(result.Top, top);
+        result.Bottom = std::min(result.Bottom, bottom);
         result.Exact = false;
         break;
       default:
         if (full)
         {
           result.Top = top;
+          result.Bottom = bottom;
           result.Exact = exact;
           result.Nadir = nadir;
           result.Slope = slope;
@@ -109,6 +119,7 @@ LocalTerrain ComputeLocalTerrain(vtkGlobeMapper* mapper, double lon, double lat,
         else
         {
           result.Top = std::max(result.Top, top);
+          result.Bottom = std::min(result.Bottom, bottom);
           result.Exact = false;
         }
     }
@@ -119,7 +130,7 @@ LocalTerrain ComputeLocalTerrain(vtkGlobeMapper* mapper, double lon, double lat,
     // window (the geoid is smooth: EGM96's slopes stay below 1e-3).
     // A layer whose geoid cannot be read is not drawn (vtkGlobeLayerSet skips it); where a
     // regional geoid has no N the layer has no weight, so it replaces nothing there.
-    double geoidTop = 0.0, geoidAt = 0.0, geoidSlope = 0.0;
+    double geoidTop = 0.0, geoidBottom = 0.0, geoidAt = 0.0, geoidSlope = 0.0;
     bool geoidCovers = true;
     if (vtkGlobeGeoid* geoid = layer->GetGeoid())
     {
@@ -131,6 +142,7 @@ LocalTerrain ComputeLocalTerrain(vtkGlobeMapper* mapper, double lon, double lat,
       geoidSlope = geoid->GetMaximumSlope();
       geoidCovers = std::isfinite(geoidAt);
       geoidTop = geoidCovers ? geoidAt + geoidSlope * radius : geoid->GetRange()[1];
+      geoidBottom = geoidCovers ? geoidAt - geoidSlope * radius : geoid->GetRange()[0];
       geoidAt = geoidCovers ? geoidAt : 0.0;
     }
     double e[4];
@@ -142,7 +154,9 @@ LocalTerrain ComputeLocalTerrain(vtkGlobeMapper* mapper, double lon, double lat,
     {
       const double top = layer->GetMaximumValue() +
         (layer->GetGeoid() ? layer->GetGeoid()->GetRange()[1] : 0.0);
-      compose(layer, false, top, false, 0.0, 0.0);
+      const double bottom = layer->GetMinimumValue() +
+        (layer->GetGeoid() ? layer->GetGeoid()->GetRange()[0] : 0.0);
+      compose(layer, false, top, bottom, false, 0.0, 0.0);
       continue;
     }
     const double cosLat = std::max(std::cos(vtkMath::RadiansFromDegrees(lat)), 1e-3);
@@ -171,10 +185,11 @@ LocalTerrain ComputeLocalTerrain(vtkGlobeMapper* mapper, double lon, double lat,
     const bool replaces = fullLon && fullLat && geoidCovers &&
       !layer->IsReprojected() &&
       (layer->GetNumberOfVoids() == 0 || layer->GetFillVoids());
-    // More than 64 texels each way: the layer's maximum is a good enough bound.
-    if (dLon > 64.0 * texelX || dLat > 64.0 * texelY)
+    // More than `texels` texels each way: the layer's range is a good enough bound.
+    if (dLon > texels * texelX || dLat > texels * texelY)
     {
-      compose(layer, replaces, layer->GetMaximumValue() + geoidTop, false, 0.0, 0.0);
+      compose(layer, replaces, layer->GetMaximumValue() + geoidTop,
+        layer->GetMinimumValue() + geoidBottom, false, 0.0, 0.0);
       continue;
     }
     auto at = [&](int i, int j) {
@@ -189,32 +204,216 @@ LocalTerrain ComputeLocalTerrain(vtkGlobeMapper* mapper, double lon, double lat,
     const int j0 = static_cast<int>(std::floor((y - dLat) / texelY - 0.5));
     const int j1 = static_cast<int>(std::floor((y + dLat) / texelY - 0.5)) + 1;
     const double mx = texelX * metresPerDegree * cosLat, my = texelY * metresPerDegree;
-    double top = -VTK_DOUBLE_MAX, slope = 0.0;
+    double slope = 0.0, top = -VTK_DOUBLE_MAX, bottom = VTK_DOUBLE_MAX;
+    // Windows of a few texels: the extremes of the bilinear terrain over the window itself. It
+    // is linear along each axis, so they lie where the window's edges and the posts' rows and
+    // columns cross (window corners, posts inside, edges across rows and columns). Wider ones:
+    // the posts around the window.
+    const double u0 = (x - dLon) / texelX - 0.5, u1 = (x + dLon) / texelX - 0.5;
+    const double v0 = (y - dLat) / texelY - 0.5, v1 = (y + dLat) / texelY - 0.5;
+    auto bilinear = [&at](double u, double v) {
+      const int i = static_cast<int>(std::floor(u)), j = static_cast<int>(std::floor(v));
+      const double fx = u - i, fy = v - j;
+      return (1 - fy) * ((1 - fx) * at(i, j) + fx * at(i + 1, j)) +
+        fy * ((1 - fx) * at(i, j + 1) + fx * at(i + 1, j + 1));
+    };
+    if (u1 - u0 <= 4.0 && v1 - v0 <= 4.0)
+    {
+      auto crossings = [](double lo, double hi) {
+        std::vector<double> c{ lo };
+        for (double k = std::floor(lo) + 1.0; k < hi; k += 1.0)
+        {
+          c.push_back(k);
+        }
+        c.push_back(hi);
+        return c;
+      };
+      for (double v : crossings(v0, v1))
+      {
+        for (double u : crossings(u0, u1))
+        {
+          const double value = bilinear(u, v);
+          top = std::max(top, value);
+          bottom = std::min(bottom, value);
+        }
+      }
+    }
     for (int j = j0; j <= j1; ++j)
     {
       for (int i = i0; i <= i1; ++i)
       {
         const double v = at(i, j);
-        top = std::max(top, v);
-        const double sx = i < i1 ? (at(i + 1, j) - v) / mx : 0.0;
-        const double sy = j < j1 ? (at(i, j + 1) - v) / my : 0.0;
-        slope = std::max(slope, std::sqrt(sx * sx + sy * sy));
+        if (u1 - u0 > 4.0 || v1 - v0 > 4.0)
+        {
+          top = std::max(top, v);
+          bottom = std::min(bottom, v);
+        }
+        if (slopes)
+        {
+          const double sx = i < i1 ? (at(i + 1, j) - v) / mx : 0.0;
+          const double sy = j < j1 ? (at(i, j + 1) - v) / my : 0.0;
+          slope = std::max(slope, std::sqrt(sx * sx + sy * sy));
+        }
       }
     }
-    double nadir = 0.0;
-    if (replaces)
-    {
-      const double u = x / texelX - 0.5, v = y / texelY - 0.5;
-      const int i = static_cast<int>(std::floor(u)), j = static_cast<int>(std::floor(v));
-      const double fx = u - i, fy = v - j;
-      nadir = (1 - fy) * ((1 - fx) * at(i, j) + fx * at(i + 1, j)) +
-        fy * ((1 - fx) * at(i, j + 1) + fx * at(i + 1, j + 1));
-    }
+    const double nadir = replaces ? bilinear(x / texelX - 0.5, y / texelY - 0.5) : 0.0;
     // Both axes' differences of a cell can combine: sqrt(2) covers the diagonal.
-    compose(layer, replaces, top + geoidTop, replaces, nadir + geoidAt,
+    compose(layer, replaces, top + geoidTop, bottom + geoidBottom, replaces, nadir + geoidAt,
       std::sqrt(2.0) * slope + geoidSlope);
   }
   return result;
+}
+
+/**
+ * The camera's frustum as its four corner rays (world, unit, in order around it), as
+ * vtkCamera::ComputeProjectionTransform builds it. False for frustums this does not model
+ * (off-axis, sheared).
+ */
+bool FrustumCorners(vtkRenderer* renderer, vtkCamera* camera, double corners[4][3])
+{
+  if (camera->GetUseOffAxisProjection() || camera->GetViewShear()[0] != 0.0 ||
+    camera->GetViewShear()[1] != 0.0)
+  {
+    return false;
+  }
+  // Camera axes in the world: rows of the model-view matrix (x right, y up, z backwards).
+  vtkMatrix4x4* mv = camera->GetModelViewTransformMatrix();
+  double axes[3][3];
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      axes[r][c] = mv->GetElement(r, c);
+    }
+    if (vtkMath::Normalize(axes[r]) == 0.0)
+    {
+      return false;
+    }
+  }
+  const double t = std::tan(vtkMath::RadiansFromDegrees(camera->GetViewAngle()) / 2.0);
+  const double aspect = std::max(renderer->GetTiledAspectRatio(), 1e-6);
+  const double w = camera->GetUseHorizontalViewAngle() ? t : t * aspect;
+  const double h = camera->GetUseHorizontalViewAngle() ? t / aspect : t;
+  const double* centre = camera->GetWindowCenter();
+  const double xs[4] = { centre[0] - 1.0, centre[0] + 1.0, centre[0] + 1.0, centre[0] - 1.0 };
+  const double ys[4] = { centre[1] - 1.0, centre[1] - 1.0, centre[1] + 1.0, centre[1] + 1.0 };
+  for (int k = 0; k < 4; ++k)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      corners[k][c] = xs[k] * w * axes[0][c] + ys[k] * h * axes[1][c] - axes[2][c];
+    }
+    if (vtkMath::Normalize(corners[k]) == 0.0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// A block of terrain: a longitude/latitude box and what bounds its terrain's eye z.
+struct Block
+{
+  double Lon[2], Lat[2];
+  double ZMin;   // lower bound of the eye z of its terrain inside the frustum
+  double Extent; // its diagonal (m)
+  bool operator>(const Block& other) const { return this->ZMin > other.ZMin; }
+};
+
+/**
+ * A lower bound of the eye z (along `view`) of any terrain inside the frustum (`planes`:
+ * inward unit normals of its four sides through the eye, body frame) whose foot lies in the
+ * longitude/latitude box `root`; +inf when none can be. Best-first subdivision: each block is
+ * the hull of its footprint's corners between its lowest and tallest composed terrain
+ * (ComputeLocalTerrain), grown by the sagitta of its curved edges; blocks wholly outside a side
+ * plane are dropped, the block with the smallest z is split until it is small (10 %) against
+ * its z or against `enough` (a bound already known), or `budget` blocks were bounded.
+ */
+double NearestTerrainInFrustum(vtkGlobeMapper* mapper, vtkGlobeEllipsoid* body,
+  const double eye[3], const double view[3], const double planes[4][3], const Block& root,
+  double lowest, double enough, int budget, double metresPerDegree)
+{
+  // The smallest radius of curvature of the body's surface (b^2 / a for the Earth).
+  const double curvature = std::max(body->GetMinimumRadius() * body->GetMinimumRadius() /
+      body->GetMaximumRadius() + std::min(0.0, lowest), 1.0);
+  // The sides are widened by 1 degree: the GPU samples distant heights from coarser levels,
+  // whose averages may stand a fraction of a pixel above the posts' bilinear terrain.
+  const double margin = std::sin(vtkMath::RadiansFromDegrees(1.0));
+  auto bound = [&](Block& b) {
+    const double lon = 0.5 * (b.Lon[0] + b.Lon[1]), lat = 0.5 * (b.Lat[0] + b.Lat[1]);
+    const double cosLat = std::max(std::cos(vtkMath::RadiansFromDegrees(lat)), 1e-3);
+    const double radius = 1.0001 * metresPerDegree *
+      std::max(0.5 * (b.Lat[1] - b.Lat[0]), 0.5 * (b.Lon[1] - b.Lon[0]) * cosLat);
+    const LocalTerrain terrain =
+      ComputeLocalTerrain(mapper, lon, lat, radius, metresPerDegree, false, 8.0);
+    double p[8][3];
+    for (int k = 0; k < 8; ++k)
+    {
+      const double llh[3] = { b.Lon[k & 1], b.Lat[(k >> 1) & 1],
+        (k & 4) ? terrain.Top : terrain.Bottom };
+      body->GeodeticToCartesianQuiet(llh, p[k]);
+    }
+    // Curved edges bulge out of the corners' hull: a chord of length L of a surface with
+    // radius of curvature R sags L^2 / (8 R); a parallel's radius is R cos(latitude).
+    const double diagonal = std::sqrt(vtkMath::Distance2BetweenPoints(p[4], p[7]));
+    const double parallel = std::max(std::sqrt(vtkMath::Distance2BetweenPoints(p[4], p[5])),
+      std::sqrt(vtkMath::Distance2BetweenPoints(p[6], p[7])));
+    const double cosPole = std::max(
+      std::cos(vtkMath::RadiansFromDegrees(std::max(std::abs(b.Lat[0]), std::abs(b.Lat[1])))),
+      1e-3);
+    const double sag = diagonal * diagonal / (8.0 * curvature) +
+      parallel * parallel / (8.0 * curvature * cosPole) + 1e-3;
+    b.Extent = diagonal;
+    for (int f = 0; f < 4; ++f)
+    {
+      bool outside = true;
+      for (int k = 0; k < 8 && outside; ++k)
+      {
+        const double d[3] = { p[k][0] - eye[0], p[k][1] - eye[1], p[k][2] - eye[2] };
+        outside = vtkMath::Dot(d, planes[f]) < -sag - margin * vtkMath::Norm(d);
+      }
+      if (outside)
+      {
+        return false;
+      }
+    }
+    b.ZMin = VTK_DOUBLE_MAX;
+    for (int k = 0; k < 8; ++k)
+    {
+      const double d[3] = { p[k][0] - eye[0], p[k][1] - eye[1], p[k][2] - eye[2] };
+      b.ZMin = std::min(b.ZMin, vtkMath::Dot(d, view) - sag);
+    }
+    return true;
+  };
+  std::priority_queue<Block, std::vector<Block>, std::greater<Block>> queue;
+  Block first = root;
+  if (bound(first))
+  {
+    queue.push(first);
+  }
+  int bounded = 1;
+  while (!queue.empty())
+  {
+    const Block b = queue.top();
+    queue.pop();
+    if (b.Extent <= 0.1 * std::max(b.ZMin, enough) || bounded + 4 > budget)
+    {
+      return b.ZMin;
+    }
+    const double lonMid = 0.5 * (b.Lon[0] + b.Lon[1]), latMid = 0.5 * (b.Lat[0] + b.Lat[1]);
+    for (int k = 0; k < 4; ++k)
+    {
+      Block child = b;
+      child.Lon[(k & 1) ? 0 : 1] = lonMid;
+      child.Lat[(k & 2) ? 0 : 1] = latMid;
+      ++bounded;
+      if (bound(child))
+      {
+        queue.push(child);
+      }
+    }
+  }
+  return VTK_DOUBLE_MAX;
 }
 } // namespace
 
@@ -332,9 +531,14 @@ bool vtkGlobeClippingRange::ComputeGlobeRange(
       rMax * (std::sqrt(ds * ds - inner * inner) + std::sqrt(outer * outer - inner * inner)));
   }
 
-  // Near: a lower bound of the distance to any terrain, turned into z along the view.
+  // Near: a lower bound of the distance to any terrain, turned into z along the view (points
+  // in the frustum lie within its half diagonal of the view axis).
+  const double angle = vtkMath::RadiansFromDegrees(camera->GetViewAngle()) / 2.0;
+  const double aspect = std::max(renderer->GetTiledAspectRatio(), 1e-6);
+  const double diagonal = std::tan(angle) * std::sqrt(1.0 + aspect * aspect);
+  const double cosHalfDiagonal = 1.0 / std::sqrt(1.0 + diagonal * diagonal);
   double llh[3];
-  double nearest = 0.0;
+  double nearest = 0.0, frustumZ = 0.0;
   if (body->CartesianToGeodeticQuiet(eye, llh))
   {
     // Over the tallest data anywhere (distance to the parallel surface at that height) ...
@@ -354,12 +558,42 @@ bool vtkGlobeClippingRange::ComputeGlobeRange(
       nearest = std::max(nearest,
         std::min((llh[2] - local.Nadir) / std::sqrt(1.0 + local.Slope * local.Slope), window));
     }
+    // ... or, better where the camera looks away from the ground under it (a summit, an
+    // aircraft looking at the horizon): the nearest terrain the frustum itself can hold, within
+    // 100 km (beyond, at least that far).
+    double corners[4][3];
+    const double reach = std::max(window, 1e5);
+    const double dLat = reach / metresPerDegree;
+    const double cosLat = std::cos(vtkMath::RadiansFromDegrees(llh[1]));
+    // (Not across a pole or the antimeridian, where the layers' windows would split.)
+    if (std::abs(llh[1]) + dLat < 89.0 && std::abs(llh[0]) + dLat / cosLat < 180.0 &&
+      FrustumCorners(renderer, camera, corners))
+    {
+      double planes[4][3];
+      bool valid = true;
+      for (int k = 0; k < 4; ++k)
+      {
+        // Corners into the body frame; each side's inward normal.
+        double a[4] = { corners[k][0], corners[k][1], corners[k][2], 0.0 };
+        double b[4] = { corners[(k + 1) % 4][0], corners[(k + 1) % 4][1],
+          corners[(k + 1) % 4][2], 0.0 };
+        worldToBody->MultiplyPoint(a, a);
+        worldToBody->MultiplyPoint(b, b);
+        vtkMath::Cross(b, a, planes[k]); // corners run counter-clockwise seen from the eye
+        valid = valid && vtkMath::Normalize(planes[k]) > 0.0;
+      }
+      const Block root = { { llh[0] - dLat / cosLat, llh[0] + dLat / cosLat },
+        { llh[1] - dLat, llh[1] + dLat }, 0.0, 0.0 };
+      const double enough = nearest * cosHalfDiagonal;
+      if (valid)
+      {
+        frustumZ = std::min(0.99 * reach * cosHalfDiagonal,
+          NearestTerrainInFrustum(mapper, body, eye, view, planes, root, minHeight, enough, 4000,
+            metresPerDegree));
+      }
+    }
   }
-  const double angle = vtkMath::RadiansFromDegrees(camera->GetViewAngle()) / 2.0;
-  const double aspect = std::max(renderer->GetTiledAspectRatio(), 1e-6);
-  const double diagonal = std::tan(angle) * std::sqrt(1.0 + aspect * aspect);
-  const double cosHalfDiagonal = 1.0 / std::sqrt(1.0 + diagonal * diagonal);
-  double nearZ = this->NearSafety * nearest * cosHalfDiagonal;
+  double nearZ = this->NearSafety * std::max(nearest * cosHalfDiagonal, frustumZ);
   nearZ = std::max(nearZ, centreZ - rOut);
   range[0] = nearZ;
   range[1] = farZ;

@@ -10,9 +10,11 @@
  * and ResetCameraEvent, fired at the end of VTK's own computation):
  *  - near: for each globe, the camera's distance to the nearest terrain it could see, bounded
  *    below by its geodetic height over the tallest data within a window around the nadir
- *    (sampled from the height layers) and over the tallest data anywhere; times the cosine of
- *    the frustum's half diagonal (z along the view, not distance) and NearSafety; for other
- *    props the nearest corner of their bounds along the view; at least MinimumNear;
+ *    (sampled from the height layers) and over the tallest data anywhere, times the cosine of
+ *    the frustum's half diagonal (z along the view, not distance); or, where larger, a lower
+ *    bound of the z of the terrain inside the frustum within 100 km (a best-first quadtree of
+ *    the layers' height bounds); times NearSafety; for other props the nearest corner of their
+ *    bounds along the view; at least MinimumNear;
  *  - far: for each globe, the distance to the horizon of the lowest terrain plus the distance
  *    from there to where the tallest data can rise into view (sqrt(d^2 - r_min^2) +
  *    sqrt(r_max^2 - r_min^2)), and never beyond the far side of the body's bounding sphere;

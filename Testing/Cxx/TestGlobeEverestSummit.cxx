@@ -23,24 +23,8 @@ int TestGlobeEverestSummit(int, char*[])
       layer->Update();
     }
     // The summit of the composed data (bilinear 90 m posts): the highest point near Everest's.
-    double lon = 86.925, lat = 27.9881, ground = -1e300;
-    for (double step : { 1e-3, 1e-4, 1e-5 })
-    {
-      const double lon0 = lon, lat0 = lat;
-      for (int i = -10; i <= 10; ++i)
-      {
-        for (int j = -10; j <= 10; ++j)
-        {
-          const double g = vtkGlobeTest::ComposedHeight(layers, lon0 + i * step, lat0 + j * step);
-          if (g > ground)
-          {
-            ground = g;
-            lon = lon0 + i * step;
-            lat = lat0 + j * step;
-          }
-        }
-      }
-    }
+    double lon = 86.925, lat = 27.9881;
+    const double ground = vtkGlobeTest::ComposedSummit(layers, lon, lat);
     double eye[3], east[3], north[3], up[3];
     body->GeodeticToCartesian(lon, lat, ground + 1.5, eye);
     body->ComputeEastNorthUp(lon, lat, east, north, up);

@@ -1389,6 +1389,31 @@ inline vtkSmartPointer<vtkActor> FlatActor(vtkPolyDataAlgorithm* source, double 
   return actor;
 }
 
+/// The highest point of the composed data near (lon, lat), refined to 1e-5 degree: the summit
+/// of the bilinear posts. Returns its height; lon and lat move to it.
+inline double ComposedSummit(const std::vector<vtkGlobeLayer*>& layers, double& lon, double& lat)
+{
+  double ground = -1e300;
+  for (double step : { 1e-3, 1e-4, 1e-5 })
+  {
+    const double lon0 = lon, lat0 = lat;
+    for (int i = -10; i <= 10; ++i)
+    {
+      for (int j = -10; j <= 10; ++j)
+      {
+        const double g = ComposedHeight(layers, lon0 + i * step, lat0 + j * step);
+        if (g > ground)
+        {
+          ground = g;
+          lon = lon0 + i * step;
+          lat = lat0 + j * step;
+        }
+      }
+    }
+  }
+  return ground;
+}
+
 /// Points the camera from a world position along a direction, with an up vector.
 inline void LookAlong(vtkRenderer* renderer, const double eye[3], const double direction[3],
   const double up[3], double viewAngle)
