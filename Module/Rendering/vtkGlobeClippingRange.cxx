@@ -219,20 +219,24 @@ LocalTerrain ComputeLocalTerrain(vtkGlobeMapper* mapper, double lon, double lat,
     };
     if (u1 - u0 <= 4.0 && v1 - v0 <= 4.0)
     {
-      auto crossings = [](double lo, double hi) {
-        std::vector<double> c{ lo };
-        for (double k = std::floor(lo) + 1.0; k < hi; k += 1.0)
+      // (A span of at most 4 texels crosses at most 4 rows or columns: 6 values each way.)
+      auto crossings = [](double lo, double hi, double* c) {
+        int n = 0;
+        c[n++] = lo;
+        for (double k = std::floor(lo) + 1.0; k < hi && n < 5; k += 1.0)
         {
-          c.push_back(k);
+          c[n++] = k;
         }
-        c.push_back(hi);
-        return c;
+        c[n++] = hi;
+        return n;
       };
-      for (double v : crossings(v0, v1))
+      double us[6], vs[6];
+      const int nu = crossings(u0, u1, us), nv = crossings(v0, v1, vs);
+      for (int b = 0; b < nv; ++b)
       {
-        for (double u : crossings(u0, u1))
+        for (int a = 0; a < nu; ++a)
         {
-          const double value = bilinear(u, v);
+          const double value = bilinear(us[a], vs[b]);
           top = std::max(top, value);
           bottom = std::min(bottom, value);
         }
