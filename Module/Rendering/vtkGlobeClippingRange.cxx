@@ -217,7 +217,8 @@ LocalTerrain ComputeLocalTerrain(vtkGlobeMapper* mapper, double lon, double lat,
       return (1 - fy) * ((1 - fx) * at(i, j) + fx * at(i + 1, j)) +
         fy * ((1 - fx) * at(i, j + 1) + fx * at(i + 1, j + 1));
     };
-    if (u1 - u0 <= 4.0 && v1 - v0 <= 4.0)
+    const bool wide = u1 - u0 > 4.0 || v1 - v0 > 4.0;
+    if (!wide)
     {
       // (A span of at most 4 texels crosses at most 4 rows or columns: 6 values each way.)
       auto crossings = [](double lo, double hi, double* c) {
@@ -242,12 +243,12 @@ LocalTerrain ComputeLocalTerrain(vtkGlobeMapper* mapper, double lon, double lat,
         }
       }
     }
-    for (int j = j0; j <= j1; ++j)
+    for (int j = j0; j <= j1 && (wide || slopes); ++j)
     {
       for (int i = i0; i <= i1; ++i)
       {
         const double v = at(i, j);
-        if (u1 - u0 > 4.0 || v1 - v0 > 4.0)
+        if (wide)
         {
           top = std::max(top, v);
           bottom = std::min(bottom, v);
@@ -266,53 +267,6 @@ LocalTerrain ComputeLocalTerrain(vtkGlobeMapper* mapper, double lon, double lat,
       std::sqrt(2.0) * slope + geoidSlope);
   }
   return result;
-}
-
-/**
- * The camera's frustum as its four corner rays (world, unit, in order around it), as
- * vtkCamera::ComputeProjectionTransform builds it. False for frustums this does not model
- * (off-axis, sheared).
- */
-bool FrustumCorners(vtkRenderer* renderer, vtkCamera* camera, double corners[4][3])
-{
-  if (camera->GetUseOffAxisProjection() || camera->GetViewShear()[0] != 0.0 ||
-    camera->GetViewShear()[1] != 0.0)
-  {
-    return false;
-  }
-  // Camera axes in the world: rows of the model-view matrix (x right, y up, z backwards).
-  vtkMatrix4x4* mv = camera->GetModelViewTransformMatrix();
-  double axes[3][3];
-  for (int r = 0; r < 3; ++r)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      axes[r][c] = mv->GetElement(r, c);
-    }
-    if (vtkMath::Normalize(axes[r]) == 0.0)
-    {
-      return false;
-    }
-  }
-  const double t = std::tan(vtkMath::RadiansFromDegrees(camera->GetViewAngle()) / 2.0);
-  const double aspect = std::max(renderer->GetTiledAspectRatio(), 1e-6);
-  const double w = camera->GetUseHorizontalViewAngle() ? t : t * aspect;
-  const double h = camera->GetUseHorizontalViewAngle() ? t / aspect : t;
-  const double* centre = camera->GetWindowCenter();
-  const double xs[4] = { centre[0] - 1.0, centre[0] + 1.0, centre[0] + 1.0, centre[0] - 1.0 };
-  const double ys[4] = { centre[1] - 1.0, centre[1] - 1.0, centre[1] + 1.0, centre[1] + 1.0 };
-  for (int k = 0; k < 4; ++k)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      corners[k][c] = xs[k] * w * axes[0][c] + ys[k] * h * axes[1][c] - axes[2][c];
-    }
-    if (vtkMath::Normalize(corners[k]) == 0.0)
-    {
-      return false;
-    }
-  }
-  return true;
 }
 
 /// A block of terrain: a longitude/latitude box and what bounds its terrain's eye z.
@@ -565,26 +519,28 @@ bool vtkGlobeClippingRange::ComputeGlobeRange(
     // ... or, better where the camera looks away from the ground under it (a summit, an
     // aircraft looking at the horizon): the nearest terrain the frustum itself can hold, within
     // 100 km (beyond, at least that far).
-    double corners[4][3];
     const double reach = std::max(window, 1e5);
     const double dLat = reach / metresPerDegree;
     const double cosLat = std::cos(vtkMath::RadiansFromDegrees(llh[1]));
     // (Not across a pole or the antimeridian, where the layers' windows would split.)
-    if (std::abs(llh[1]) + dLat < 89.0 && std::abs(llh[0]) + dLat / cosLat < 180.0 &&
-      FrustumCorners(renderer, camera, corners))
+    if (std::abs(llh[1]) + dLat < 89.0 && std::abs(llh[0]) + dLat / cosLat < 180.0)
     {
-      double planes[4][3];
+      // The frustum's sides (VTK's planes, left, right, bottom, top first: inward normals,
+      // through the eye) into the body frame, where normals go by the transposed matrix.
+      double world[24], planes[4][3];
+      camera->GetFrustumPlanes(aspect, world);
+      vtkMatrix4x4* bodyToWorld = actor->GetMatrix();
       bool valid = true;
       for (int k = 0; k < 4; ++k)
       {
-        // Corners into the body frame; each side's inward normal.
-        double a[4] = { corners[k][0], corners[k][1], corners[k][2], 0.0 };
-        double b[4] = { corners[(k + 1) % 4][0], corners[(k + 1) % 4][1],
-          corners[(k + 1) % 4][2], 0.0 };
-        worldToBody->MultiplyPoint(a, a);
-        worldToBody->MultiplyPoint(b, b);
-        vtkMath::Cross(b, a, planes[k]); // corners run counter-clockwise seen from the eye
-        valid = valid && vtkMath::Normalize(planes[k]) > 0.0;
+        for (int c = 0; c < 3; ++c)
+        {
+          planes[k][c] = bodyToWorld->GetElement(0, c) * world[4 * k] +
+            bodyToWorld->GetElement(1, c) * world[4 * k + 1] +
+            bodyToWorld->GetElement(2, c) * world[4 * k + 2];
+        }
+        valid = valid && vtkMath::Normalize(planes[k]) > 0.0 &&
+          std::isfinite(planes[k][0] + planes[k][1] + planes[k][2]);
       }
       const Block root = { { llh[0] - dLat / cosLat, llh[0] + dLat / cosLat },
         { llh[1] - dLat, llh[1] + dLat }, 0.0, 0.0 };

@@ -495,8 +495,8 @@ std::string GLString(GLenum name)
 }
 
 /// The depth buffer the scene is drawn into (VTK's render framebuffer, where the window has
-/// one; VTK 9.1 asks the same 32 bits for the framebuffers it blits to): bits and type. Renderers differ here (an unsigned
-/// normalized 32-bit request may be served with 24 bits), and the depth modes' floors with it.
+/// one; VTK 9.1 asks the same 32 bits for the framebuffers it blits to): bits and type.
+/// Renderers differ here (an unsigned normalized 32-bit request may be served with 24 bits).
 std::string DepthBufferFormat(vtkRenderWindow* window)
 {
   auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
@@ -2020,7 +2020,8 @@ bool Benchmark::WriteJson(double totalSeconds)
   j << "  \"machine\": {\"gl_renderer\": " << JsonString(this->Renderer)
     << ", \"gl_version\": " << JsonString(this->Version)
     << ", \"gl_vendor\": " << JsonString(this->Vendor)
-    << ", \"depth_buffer\": " << JsonString(this->DepthBuffer) << ", \"cpu\": " << JsonString(CpuModel())
+    << ", \"depth_buffer\": " << JsonString(this->DepthBuffer)
+    << ", \"cpu\": " << JsonString(CpuModel())
     << ", \"cpu_threads\": " << std::thread::hardware_concurrency()
     << ", \"timer_queries\": " << (vtkOpenGLRenderTimer::IsSupported() ? "true" : "false")
     << ", \"loadavg_start\": " << JsonString(this->LoadStart)
