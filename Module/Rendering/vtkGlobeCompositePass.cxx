@@ -6,7 +6,7 @@
 #include "vtkMath.h"
 #include "vtkGlobeShaderSources.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLVertexArrayObject.h"
 #include "vtkOpenGLRenderTimer.h"
 #include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -21,6 +21,7 @@
 
 #include "vtkGlobeAtmosphere.h"
 #include "vtkGlobeCompositeFS.h"
+#include "vtkGlobeCompositeVS.h"
 #include "vtkGlobeLines.h"
 
 #include <array>
@@ -37,6 +38,7 @@ vtkGlobeCompositePass::vtkGlobeCompositePass()
 vtkGlobeCompositePass::~vtkGlobeCompositePass()
 {
   this->SetGBuffer(nullptr, nullptr);
+  this->SetCoverage(nullptr, 0);
   this->SetEllipsoid(nullptr);
   this->SetLayers(nullptr);
   this->SetHeightColors(nullptr);
@@ -44,7 +46,10 @@ vtkGlobeCompositePass::~vtkGlobeCompositePass()
   {
     this->HeightColorTexture->Delete();
   }
-  delete this->Quad;
+  if (this->VAO)
+  {
+    this->VAO->Delete();
+  }
   delete this->Timer;
 }
 
@@ -72,6 +77,13 @@ void vtkGlobeCompositePass::SetGBuffer(vtkTextureObject* gbuffer, vtkTextureObje
 {
   Assign(this->GBuffer, gbuffer);
   Assign(this->Depth, depth);
+}
+
+void vtkGlobeCompositePass::SetCoverage(vtkTextureObject* blocks, int blockSize)
+{
+  // Not Modified(): set per frame with the G-buffer.
+  Assign(this->Coverage, blocks);
+  this->CoverageBlock = blocks ? blockSize : 0;
 }
 
 void vtkGlobeCompositePass::SetEllipsoid(vtkGlobeEllipsoid* ellipsoid)
@@ -150,8 +162,11 @@ void vtkGlobeCompositePass::ReleaseGraphicsResources(vtkWindow* window)
   {
     this->HeightColorTexture->ReleaseGraphicsResources(window);
   }
-  delete this->Quad;
-  this->Quad = nullptr;
+  if (this->VAO)
+  {
+    this->VAO->ReleaseGraphicsResources();
+  }
+  this->Program = nullptr;
   this->ShaderKey.clear();
   this->Timer->ReleaseGraphicsResources();
 }
@@ -176,32 +191,27 @@ void vtkGlobeCompositePass::Render(const vtkRenderState* s)
     return;
   }
   const std::string key = this->GetShaderKey();
-  if (this->Quad && key != this->ShaderKey)
+  if (this->Program && key != this->ShaderKey)
   {
     // VTK's shader cache keeps every program it compiled for the window's life (MiBs each on
     // Mesa): free the GL program of a variant no longer drawn; the cache recompiles it if it
     // comes back.
-    if (this->Quad->Program)
-    {
-      this->Quad->Program->ReleaseGraphicsResources(window);
-    }
-    delete this->Quad;
-    this->Quad = nullptr;
+    this->Program->ReleaseGraphicsResources(window);
+    this->Program = nullptr;
   }
-  if (!this->Quad)
+  if (!this->Program)
   {
     this->FragmentSource = this->BuildFragmentShader();
-    this->Quad = new vtkOpenGLQuadHelper(window,
-      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
-      this->FragmentSource.c_str(), "");
+    this->Program = window->GetShaderCache()->ReadyShaderProgram(
+      vtkGlobeCompositeVS, this->FragmentSource.c_str(), "");
     this->ShaderKey = key;
     ++this->NumberOfShaderBuilds;
   }
   else
   {
-    window->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
+    window->GetShaderCache()->ReadyShaderProgram(this->Program);
   }
-  vtkShaderProgram* p = this->Quad->Program;
+  vtkShaderProgram* p = this->Program;
   if (!p || !p->GetCompiled())
   {
     vtkErrorMacro(<< "The globe's composition shader did not compile");
@@ -292,7 +302,31 @@ void vtkGlobeCompositePass::Render(const vtkRenderState* s)
   }
   this->Layers->BindTextures(p, this->GetRoles());
 
-  this->Quad->Render();
+  // The geometry: a rectangle per band of rows (vtkGlobeCompositeVS).
+  int viewport[4];
+  state->vtkglGetIntegerv(GL_VIEWPORT, viewport);
+  const int band = 64;
+  const bool cull = this->BlockCulling && !this->Atmosphere && this->Coverage &&
+    this->CoverageBlock > 0;
+  if (cull)
+  {
+    this->Coverage->Activate();
+    p->SetUniformi("globeCoverage", this->Coverage->GetTextureUnit());
+  }
+  p->SetUniform2i("globeViewportSize", std::array<int, 2>{ viewport[2], viewport[3] }.data());
+  p->SetUniformi("globeBand", band);
+  p->SetUniformi("globeBlock", cull ? this->CoverageBlock : 0);
+  if (!this->VAO)
+  {
+    this->VAO = vtkOpenGLVertexArrayObject::New();
+  }
+  this->VAO->Bind();
+  glDrawArrays(GL_TRIANGLES, 0, 6 * ((viewport[3] + band - 1) / band));
+  this->VAO->Release();
+  if (cull)
+  {
+    this->Coverage->Deactivate();
+  }
 
   this->Layers->UnbindTextures(this->GetRoles());
   if (this->HeightColors)
@@ -501,6 +535,7 @@ void vtkGlobeCompositePass::PrintSelf(ostream& os, vtkIndent indent)
      << (this->Atmosphere ? "Atmosphere " : "") << (this->Graticule ? "Graticule " : "")
      << (this->Contours ? "Contours" : "") << "\n";
   os << indent << "TerrainRefinement: " << this->TerrainRefinement << "\n";
+  os << indent << "BlockCulling: " << this->BlockCulling << "\n";
   os << indent << "ShaderKey: " << this->ShaderKey << "\n";
   os << indent << "NumberOfShaderBuilds: " << this->NumberOfShaderBuilds << "\n";
 }

@@ -29,10 +29,11 @@
 
 class vtkGlobeEllipsoid;
 class vtkGlobeLayerSet;
-class vtkOpenGLQuadHelper;
+class vtkOpenGLVertexArrayObject;
 class vtkOpenGLRenderWindow;
 class vtkOpenGLRenderTimer;
 class vtkScalarsToColors;
+class vtkShaderProgram;
 class vtkTextureObject;
 
 class VTKGLOBERENDERING_EXPORT vtkGlobeCompositePass : public vtkOpenGLRenderPass
@@ -51,6 +52,26 @@ public:
   void SetGBuffer(vtkTextureObject* gbuffer, vtkTextureObject* depth);
   void SetEllipsoid(vtkGlobeEllipsoid* ellipsoid);
   void SetLayers(vtkGlobeLayerSet* layers);
+  ///@}
+
+  /**
+   * Which blocks of the viewport hold terrain: a texture of `blockSize`-pixel blocks whose red
+   * is below 1e29 where a block has a pixel of terrain (the mapper's minimum reduction of the
+   * G-buffer); nullptr: every block may. The pass shades only the span of such blocks in
+   * each band of rows (BlockCulling).
+   */
+  void SetCoverage(vtkTextureObject* blocks, int blockSize);
+
+  ///@{
+  /**
+   * Shade only the columns of each band of rows whose blocks hold terrain (default on), not
+   * the whole viewport: the sky costs nothing (Documentation/rendering.md "What the
+   * composition shades"). Off, or with the atmosphere (which shades the sky), or without a
+   * coverage, every pixel of the viewport runs the program. The picture is the same.
+   */
+  vtkSetMacro(BlockCulling, bool);
+  vtkGetMacro(BlockCulling, bool);
+  vtkBooleanMacro(BlockCulling, bool);
   ///@}
 
   ///@{
@@ -208,7 +229,13 @@ protected:
   double ClipW[4] = { 0, 0, 0, 0 };
   double DepthMap[3] = { 0, 0, 0 };
 
-  vtkOpenGLQuadHelper* Quad = nullptr;
+  // The program (the window's shader cache owns it) and an empty vertex array: the
+  // geometry comes from gl_VertexID (vtkGlobeCompositeVS).
+  vtkShaderProgram* Program = nullptr;
+  vtkOpenGLVertexArrayObject* VAO = nullptr;
+  vtkTextureObject* Coverage = nullptr;
+  int CoverageBlock = 0;
+  bool BlockCulling = true;
   std::string ShaderKey;
   std::string FragmentSource;
   vtkOpenGLRenderTimer* Timer = nullptr;

@@ -933,13 +933,14 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     }
   }
   bool reduced = false;
+  bool levels = false; // the reduction's levels are this G-buffer's
   if (!(in.ReductionValid && in.ReductionView == in.RenderedView))
   {
     // A new view (or the first): its sphere came from another view's terrain, and the next
     // frame would correct it, changing the picture. This frame's own lowest terrain is read
     // back now (the one frame that waits for the GPU) and, when it asks for another sphere,
     // the grid is cast again, so the first frame after a move is final.
-    this->ReduceMinimumRadius(ren, width, height, eye);
+    levels = this->ReduceMinimumRadius(ren, width, height, eye);
     this->CollectReduction();
     reduced = in.ReductionValid;
     if (in.ReductionValid)
@@ -953,7 +954,7 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
         primaryHeight = settled;
         this->PrimaryFromReduction = true;
         ++this->NumberOfRecasts;
-        reduced = false; // the G-buffer changes: reduce it again below
+        reduced = levels = false; // the G-buffer changes: reduce it again below
         in.Grid->Update(
           camera, act->GetMatrix(), ren->GetTiledAspectRatio(), primaryHeight, maxHeight);
         in.GridPass->Render(&renderState);
@@ -970,16 +971,22 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     in.Feedback->Render(window, in.GBuffer, in.GDepth, reference, in.Ellipsoid->GetRadii());
     in.FeedbackView = in.RenderedView;
   }
+  if (!reduced && !levels)
+  {
+    // The final G-buffer's reduction: the next frame's primary sphere (read back then), and
+    // now the blocks the composition shades.
+    levels = this->ReduceMinimumRadius(ren, width, height, eye);
+  }
   state->vtkglViewport(viewport[0], viewport[1], width, height);
   this->UpdateLight(ren, act);
   in.Composite->SetGBuffer(in.GBuffer, in.GDepth);
+  // The reduction's second level: 16 x 16 pixel blocks.
+  in.Composite->SetCoverage(
+    levels && in.ReductionLevels.size() > 1 ? in.ReductionLevels[1].Get() : nullptr, 16);
   in.Composite->Render(&renderState);
+  in.Composite->SetCoverage(nullptr, 0);
   this->LastFrameDrewGlobe = true;
   in.PrimaryHeight = primaryHeight;
-  if (!reduced)
-  {
-    this->ReduceMinimumRadius(ren, width, height, eye);
-  }
 }
 
 //------------------------------------------------------------------------------
@@ -1250,7 +1257,7 @@ bool vtkGlobeMapper::RenderGBuffer(vtkRenderer* ren, vtkActor* act, int width, i
 }
 
 //------------------------------------------------------------------------------
-void vtkGlobeMapper::ReduceMinimumRadius(
+bool vtkGlobeMapper::ReduceMinimumRadius(
   vtkRenderer* ren, int width, int height, const double eye[3])
 {
   auto& in = *this->Internals;
@@ -1304,7 +1311,7 @@ void vtkGlobeMapper::ReduceMinimumRadius(
   {
     vtkErrorMacro(<< "The globe's reduction shader did not compile");
     in.ReductionValid = false;
-    return;
+    return false;
   }
 
   in.ReductionTimer.ReusableStart();
@@ -1360,6 +1367,7 @@ void vtkGlobeMapper::ReduceMinimumRadius(
     in.PendingEye[i] = eye[i];
   }
   in.PendingView = in.RenderedView;
+  return true;
 }
 
 //------------------------------------------------------------------------------

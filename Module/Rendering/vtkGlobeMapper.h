@@ -318,7 +318,8 @@ protected:
   double GridPixelsPerCell = 1.6; // 0: the fixed GridResolution
 
   bool RenderGBuffer(vtkRenderer* ren, vtkActor* act, int width, int height);
-  void ReduceMinimumRadius(vtkRenderer* ren, int width, int height, const double eye[3]);
+  // Reduces the G-buffer (false: the program did not compile, no levels).
+  bool ReduceMinimumRadius(vtkRenderer* ren, int width, int height, const double eye[3]);
   void CollectReduction();
   void UpdateLight(vtkRenderer* ren, vtkActor* act);
   // A camera that leaves nothing of the globe to see: a key per kind ("" when fine) and the

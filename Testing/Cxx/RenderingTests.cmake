@@ -64,9 +64,11 @@ list(APPEND globe_rendering_tests
 list(APPEND globe_rendering_tests
   TestGlobeGeodeticEdges.cxx
   TestGlobeVerticalDatum.cxx)
-# Cost (issue 19): layers out of the view are culled, without changing a pixel.
+# Cost (issue 19): layers out of the view are culled, and the composition skips the sky,
+# without changing a pixel.
 list(APPEND globe_rendering_tests
-  TestGlobeLayerCulling.cxx)
+  TestGlobeLayerCulling.cxx
+  TestGlobeCompositeCulling.cxx)
 # Pictures (issue 14): heights coloured by any vtkScalarsToColors.
 list(APPEND globe_rendering_tests
   TestGlobeHeightColors.cxx
