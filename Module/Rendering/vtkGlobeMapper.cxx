@@ -786,12 +786,6 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   {
     return;
   }
-  if (this->GridPixelsPerCell > 0.0)
-  {
-    // The grid follows the viewport (not Modified(): a window resize rebuilds nothing else).
-    const double points = std::ceil(std::max(width, height) / this->GridPixelsPerCell);
-    in.GridPass->SetResolution(static_cast<int>(std::max(2.0, std::min(points, 2048.0))));
-  }
 
   this->CollectReduction();
   in.UpdateLayers();
@@ -870,6 +864,7 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     in.ReductionValid = false;
     return;
   }
+  this->FitGrid(ren, act, width, height);
   // Layers out of the view are left out of the passes below.
   in.Layers->CullLayers(camera, ren->GetTiledAspectRatio(), act->GetMatrix(), in.Ellipsoid);
 
@@ -925,6 +920,7 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
       primaryHeight = std::max(primaryHeight, minHeight);
       in.Grid->Update(
         camera, act->GetMatrix(), ren->GetTiledAspectRatio(), primaryHeight, maxHeight);
+      this->FitGrid(ren, act, width, height);
       in.GridPass->Render(&renderState);
       if (!this->RenderGBuffer(ren, act, width, height))
       {
@@ -957,6 +953,7 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
         reduced = levels = false; // the G-buffer changes: reduce it again below
         in.Grid->Update(
           camera, act->GetMatrix(), ren->GetTiledAspectRatio(), primaryHeight, maxHeight);
+        this->FitGrid(ren, act, width, height);
         in.GridPass->Render(&renderState);
         if (!this->RenderGBuffer(ren, act, width, height))
         {
@@ -987,6 +984,31 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   in.Composite->SetCoverage(nullptr, 0);
   this->LastFrameDrewGlobe = true;
   in.PrimaryHeight = primaryHeight;
+}
+
+//------------------------------------------------------------------------------
+void vtkGlobeMapper::FitGrid(vtkRenderer* ren, vtkActor* act, int width, int height)
+{
+  if (!(this->GridPixelsPerCell > 0.0))
+  {
+    return; // a fixed GridResolution
+  }
+  // The grid follows the viewport (not Modified(): a window resize rebuilds nothing else), or
+  // the grid's own span on screen where that is shorter (the whole planet in part of the
+  // window), rounded up to 16 points so that nearby views share a size; recomputed after every
+  // cast of the grid, so that a view always gets the same grid.
+  auto& in = *this->Internals;
+  const double side = std::max(width, height);
+  const double windowPoints = std::ceil(side / this->GridPixelsPerCell);
+  double points = windowPoints;
+  const double span = in.Grid->ComputeSamplingSpan(
+    ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1),
+    act->GetMatrix(), width, height);
+  if (span < side)
+  {
+    points = std::min(windowPoints, 16.0 * std::ceil(span / this->GridPixelsPerCell / 16.0));
+  }
+  in.GridPass->SetResolution(static_cast<int>(std::max(2.0, std::min(points, 2048.0))));
 }
 
 //------------------------------------------------------------------------------

@@ -115,7 +115,9 @@ public:
    * By default it follows the window: ceil(L / GridPixelsPerCell) points per side, L the
    * viewport's larger side in pixels (default 1.6: 500^2 at 800 x 600, 250^2 at 400 x 300,
    * 1000^2 at 1600 x 1200), clamped to 2..2048, so the grid's error in pixels and its cost per
-   * pixel stay the same in any window. With the default terrain refinement a coarser grid
+   * pixel stay the same in any window; where the grid spans less of the window than L (the
+   * whole planet in part of it), L is that span (vtkGlobeProjectiveGrid::ComputeSamplingSpan),
+   * rounded up to 16 points (336^2 for the whole Earth from 22,000 km at 800 x 600). With the default terrain refinement a coarser grid
    * (3.2) is faster and as accurate from the air, but not in views along the ground, where
    * ridges the grid misses are not found by the refinement (Documentation/accuracy-vs-time.md
    * "Defaults chosen from it"). SetGridResolution fixes the size instead (points per
@@ -318,6 +320,8 @@ protected:
   double GridPixelsPerCell = 1.6; // 0: the fixed GridResolution
 
   bool RenderGBuffer(vtkRenderer* ren, vtkActor* act, int width, int height);
+  // The automatic grid's size for the view just cast (GridPixelsPerCell).
+  void FitGrid(vtkRenderer* ren, vtkActor* act, int width, int height);
   // Reduces the G-buffer (false: the program did not compile, no levels).
   bool ReduceMinimumRadius(vtkRenderer* ren, int width, int height, const double eye[3]);
   void CollectReduction();

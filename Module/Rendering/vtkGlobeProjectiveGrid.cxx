@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 vtkStandardNewMacro(vtkGlobeProjectiveGrid);
@@ -388,6 +389,52 @@ void vtkGlobeProjectiveGrid::ComputeGridRay(double u, double v, double ray[3])
   const Vec r = Normalized(Add(Add(Make(this->SamplingForward), Make(this->SamplingRight), x),
     Make(this->SamplingUp), y));
   Copy(r, ray);
+}
+
+double vtkGlobeProjectiveGrid::ComputeSamplingSpan(
+  vtkMatrix4x4* worldToClip, vtkMatrix4x4* bodyToWorld, int width, int height)
+{
+  const double inf = std::numeric_limits<double>::infinity();
+  if (!worldToClip || !this->Visible || width <= 0 || height <= 0)
+  {
+    return inf;
+  }
+  const double* radii = this->Ellipsoid->GetRadii();
+  const double* e = this->SamplingExtent;
+  const double corners[4][2] = { { e[0], e[2] }, { e[1], e[2] }, { e[1], e[3] }, { e[0], e[3] } };
+  double screen[4][2];
+  for (int i = 0; i < 4; ++i)
+  {
+    // A direction (w = 0): the eye's translation drops out, and the corner's point on screen is
+    // its vanishing point.
+    double d[4] = { 0, 0, 0, 0 };
+    for (int k = 0; k < 3; ++k)
+    {
+      d[k] = (this->SamplingForward[k] + corners[i][0] * this->SamplingRight[k] +
+               corners[i][1] * this->SamplingUp[k]) *
+        radii[k];
+    }
+    if (bodyToWorld)
+    {
+      bodyToWorld->MultiplyPoint(d, d);
+    }
+    double c[4];
+    worldToClip->MultiplyPoint(d, c);
+    if (!(c[3] > 1e-9 * (std::abs(c[0]) + std::abs(c[1]))))
+    {
+      return inf;
+    }
+    screen[i][0] = 0.5 * width * c[0] / c[3];
+    screen[i][1] = 0.5 * height * c[1] / c[3];
+  }
+  double longest = 0.0;
+  for (int i = 0; i < 4; ++i)
+  {
+    const int j = (i + 1) % 4;
+    longest = std::max(longest,
+      std::hypot(screen[j][0] - screen[i][0], screen[j][1] - screen[i][1]));
+  }
+  return std::isfinite(longest) ? longest : inf;
 }
 
 bool vtkGlobeProjectiveGrid::ComputeGridPoint(

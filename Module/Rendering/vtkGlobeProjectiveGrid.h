@@ -114,6 +114,17 @@ public:
   void ComputeGridRay(double u, double v, double ray[3]);
 
   /**
+   * How long the grid is on screen: the longest edge of the sampling camera's frustum seen
+   * through the view, in pixels of a width x height viewport. `worldToClip` is the camera's
+   * composite projection (world -> clip) and `bodyToWorld` the actor's matrix (nullptr: the
+   * identity). +inf where a corner's direction points behind the eye, or before Update. The
+   * mapper's automatic grid spaces its points over this span when it is shorter than the
+   * viewport (a whole planet in part of the window).
+   */
+  double ComputeSamplingSpan(
+    vtkMatrix4x4* worldToClip, vtkMatrix4x4* bodyToWorld, int width, int height);
+
+  /**
    * The double-precision reference of the grid shader: for the grid point (u, v), the unit
    * direction from the body's centre (scaled space) of its reference point and the
    * reference point relative to the eye (scaled space, on the primary sphere). Returns false

@@ -28,7 +28,8 @@
 //   precision    float geodetic coordinates (vtkGlobeMapper::HighPrecisionGeodeticOff) against
 //                the default hi/lo ones;
 //   composition  colour layers nearest, feather 0 / 32 texels (all layers), Kooima's projection
-//                weight (colour layers);
+//                weight (colour layers); the composition over the whole viewport, sky included
+//                (vtkGlobeCompositePass::BlockCullingOff, as before 2026-11-28);
 //   effects      unlit, each effect alone on top of lighting, all;
 //   refinement   per-pixel terrain refinement: none (the defaults until 2026-11-28), 2 and 3
 //                steps at the default grid; 512^2 unrefined (the benchmark's baseline until
@@ -188,7 +189,7 @@ struct Options
   std::vector<std::string> Depth = { "default, VTK clipping", "logarithmic, policy",
     "logarithmic, VTK clipping" };
   std::vector<std::string> Compositions = { "colour nearest", "feather 0", "feather 32",
-    "colour projection weight" };
+    "colour projection weight", "whole viewport" };
   Size Sphere = { 256, 128 };
   std::vector<Size> Meshes = { { 256, 128 }, { 1024, 512 }, { 2048, 1024 }, { 4096, 2048 } };
   std::vector<int> MatrixGrids = { 256, 512, 1024 };
@@ -840,6 +841,7 @@ void Benchmark::ResetDefaults()
   m->SetGraticule(false);
   m->SetContours(false);
   m->GetCompositePass()->SetHeightColors(nullptr);
+  m->GetCompositePass()->SetBlockCulling(true);
   for (vtkGlobeLayer* layer : this->Layers)
   {
     layer->SetFeatherWidth(this->DefaultFeather[layer]);
@@ -1012,6 +1014,10 @@ std::vector<Setting> Benchmark::Settings()
                         }
                       });
                     } });
+    // The composition over the whole viewport, sky included, as before 2026-11-28
+    // (Documentation/rendering.md "What the composition shades").
+    composition.push_back({ "composition", "whole viewport",
+      [m] { m->GetCompositePass()->SetBlockCulling(false); } });
     for (const Setting& c : composition)
     {
       if (std::count(this->Opt.Compositions.begin(), this->Opt.Compositions.end(), c.Name))
@@ -2217,8 +2223,9 @@ void Usage(const char* program)
     "  memory. Then the whole-Earth grid x window matrix (Mahsman's Tables 6.2-6.4 layout).\n"
     "  --quick         fewer settings, frames and samples, a smaller window (a smoke run)\n"
     "  --effects-only  only the baseline and the effects, at the whole Earth, 1024x768\n"
-    "  --grid-only     only the baseline (the automatic grid), a fixed 512^2 and the textured\n"
-    "                  sphere, without the matrix (with --window: the automatic grid's rows)\n"
+    "  --grid-only     only the baseline (the automatic grid), a fixed 512^2, the composition\n"
+    "                  over the whole viewport and the textured sphere, without the matrix\n"
+    "                  (with --window: the automatic grid's rows)\n"
     "  --refinement-only  only the baseline and the terrain refinement rows (with coarser\n"
     "                  automatic grids, 4.8 and 6.4 px per cell), without naive globes or\n"
     "                  the matrix\n"
@@ -2316,7 +2323,7 @@ int main(int argc, char* argv[])
     options.GridFactors.clear();
     options.Effects.clear();
     options.Depth.clear();
-    options.Compositions.clear();
+    options.Compositions = { "whole viewport" }; // what shading only the terrain's blocks saves
     options.Meshes.clear();
     options.Matrix = false;
   }
