@@ -311,7 +311,9 @@ def markdown(data, fronts):
 
 def window_rows(datas):
     """(scene, window, policy) -> row, policy "fixed" (512^2), "automatic" (the baseline: the
-    mapper's defaults) or "sphere" (VTK's textured sphere), from runs in different windows."""
+    mapper's defaults), "whole viewport" (the defaults with the composition over the whole
+    viewport, sky included) or "sphere" (VTK's textured sphere), from runs in different
+    windows."""
     table = {}
     for data in datas:
         w, h = data["settings"]["window"]
@@ -319,6 +321,8 @@ def window_rows(datas):
             policy = ("fixed" if r["family"] == "grid" and r["setting"] == "512^2" else
                       "automatic" if (r["family"] == "baseline" and
                                       not r["setting"].endswith("repeated last")) else
+                      "whole viewport" if (r["family"] == "composition" and
+                                           r["setting"] == "whole viewport") else
                       "sphere" if r["method"] == "sphere" else None)
             if policy:
                 table[(r["scene"], (w, h), policy)] = r
@@ -333,7 +337,7 @@ def windows_markdown(table):
     for s in scenes:
         for w in windows:
             sphere = table.get((s, w, "sphere"))
-            for policy in ("fixed", "automatic"):
+            for policy in ("fixed", "automatic", "whole viewport"):
                 r = table.get((s, w, policy))
                 if not r:
                     continue
@@ -341,7 +345,9 @@ def windows_markdown(table):
                 ratio = ("%.1f×" % (t["median"] / sphere["frame_ms"]["median"])
                          if sphere and sphere["frame_ms"]["median"] else "–")
                 out.append("| %s | %d×%d | %s %d² | %.1f [%.1f–%.1f] | %s | %.0f | %s |" % (
-                    s, w[0], w[1], "fixed" if policy == "fixed" else "automatic", r["grid"],
+                    s, w[0], w[1], {"fixed": "fixed", "automatic": "automatic",
+                                    "whole viewport": "automatic, whole viewport"}[policy],
+                    r["grid"],
                     t["median"], t["q1"], t["q3"], fmt(error_of(r), "%.3f"),
                     t["median"] / (w[0] * w[1] / 1e6), ratio))
     return "\n".join(out) + "\n"

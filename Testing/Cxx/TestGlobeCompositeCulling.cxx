@@ -81,16 +81,8 @@ void Compare(vtkGlobeTest::Scene& scene, const char* what)
   const auto depthOff = vtkGlobeTest::ReadDepth(scene.Window);
   pass->BlockCullingOn();
   int pixels = 0, depths = 0;
-  long covered = 0;
-  for (size_t i = 0; i < depthOn.size(); ++i)
-  {
-    depths += depthOn[i] != depthOff[i] ? 1 : 0;
-    pixels += (imageOn[3 * i] != imageOff[3 * i] || imageOn[3 * i + 1] != imageOff[3 * i + 1] ||
-                imageOn[3 * i + 2] != imageOff[3 * i + 2])
-      ? 1
-      : 0;
-    covered += depthOn[i] < 1.0f ? 1 : 0;
-  }
+  vtkGlobeTest::CountDifferences(imageOn, depthOn, imageOff, depthOff, pixels, depths);
+  const long covered = vtkGlobeTest::CoveredPixels(depthOn);
   const long all = static_cast<long>(width) * height;
   const long spans = ShadedSpans(depthOn, width, height);
   const double saved = off - on, sky = static_cast<double>(all - spans);

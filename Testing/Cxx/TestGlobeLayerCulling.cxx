@@ -67,15 +67,7 @@ void Compare(vtkGlobeTest::Scene& scene, int& culled, int& pixels, int& depths, 
   const auto imageOff = vtkGlobeTest::ReadPixels(scene.Window);
   const auto depthOff = vtkGlobeTest::ReadDepth(scene.Window);
   set->LayerCullingOn();
-  pixels = depths = 0;
-  for (size_t i = 0; i < depthOn.size(); ++i)
-  {
-    depths += depthOn[i] != depthOff[i] ? 1 : 0;
-    pixels += (imageOn[3 * i] != imageOff[3 * i] || imageOn[3 * i + 1] != imageOff[3 * i + 1] ||
-                imageOn[3 * i + 2] != imageOff[3 * i + 2])
-      ? 1
-      : 0;
-  }
+  vtkGlobeTest::CountDifferences(imageOn, depthOn, imageOff, depthOff, pixels, depths);
 }
 } // namespace
 

@@ -458,6 +458,23 @@ inline std::vector<unsigned char> ReadPixels(vtkRenderWindow* window)
   return rgb;
 }
 
+/// Two frames of one window (ReadPixels and ReadDepth of each): how many pixels differ in
+/// colour and how many in depth.
+inline void CountDifferences(const std::vector<unsigned char>& imageA,
+  const std::vector<float>& depthA, const std::vector<unsigned char>& imageB,
+  const std::vector<float>& depthB, int& pixels, int& depths)
+{
+  pixels = depths = 0;
+  for (size_t i = 0; i < depthA.size() && i < depthB.size(); ++i)
+  {
+    depths += depthA[i] != depthB[i] ? 1 : 0;
+    pixels += (imageA[3 * i] != imageB[3 * i] || imageA[3 * i + 1] != imageB[3 * i + 1] ||
+                imageA[3 * i + 2] != imageB[3 * i + 2])
+      ? 1
+      : 0;
+  }
+}
+
 /// A sun for the scene: a scene light 1.5e11 m out above the geodetic point (lon, lat)
 /// (degrees), shining at the body's centre; the renderer holds it.
 inline vtkLight* AddSunOver(Scene& scene, double lon, double lat, double position[3])
