@@ -8,7 +8,6 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkOpenGLRenderTimer.h"
-#include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
@@ -311,8 +310,11 @@ void vtkGlobeCompositePass::Render(const vtkRenderState* s)
   if (cull)
   {
     this->Coverage->Activate();
-    p->SetUniformi("globeCoverage", this->Coverage->GetTextureUnit());
   }
+  // Unread without culling, but bound to a 2D float texture all the same: a sampler left on
+  // unit 0 could share it with a sampler of another type, which fails the draw.
+  p->SetUniformi("globeCoverage",
+    cull ? this->Coverage->GetTextureUnit() : this->GBuffer->GetTextureUnit());
   p->SetUniform2i("globeViewportSize", std::array<int, 2>{ viewport[2], viewport[3] }.data());
   p->SetUniformi("globeBand", band);
   p->SetUniformi("globeBlock", cull ? this->CoverageBlock : 0);
