@@ -848,7 +848,15 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     return;
   }
 
-  if (!in.Grid->Update(camera, act->GetMatrix(), ren->GetTiledAspectRatio(), primaryHeight, maxHeight))
+  // Every cast of the grid (this one, the page rounds', the recast) sizes the automatic grid
+  // for it, so that a view always gets the same grid.
+  auto castGrid = [&]() {
+    const bool cast = in.Grid->Update(
+      camera, act->GetMatrix(), ren->GetTiledAspectRatio(), primaryHeight, maxHeight);
+    this->FitGrid(ren, act, width, height);
+    return cast;
+  };
+  if (!castGrid())
   {
     if (in.ReportedStatus != in.Grid->GetStatus())
     {
@@ -864,7 +872,6 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     in.ReductionValid = false;
     return;
   }
-  this->FitGrid(ren, act, width, height);
   // Layers out of the view are left out of the passes below.
   in.Layers->CullLayers(camera, ren->GetTiledAspectRatio(), act->GetMatrix(), in.Ellipsoid);
 
@@ -918,9 +925,7 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
       maxHeight = in.Layers->GetMaximumHeight();
       minHeight = in.Layers->GetMinimumHeight();
       primaryHeight = std::max(primaryHeight, minHeight);
-      in.Grid->Update(
-        camera, act->GetMatrix(), ren->GetTiledAspectRatio(), primaryHeight, maxHeight);
-      this->FitGrid(ren, act, width, height);
+      castGrid();
       in.GridPass->Render(&renderState);
       if (!this->RenderGBuffer(ren, act, width, height))
       {
@@ -951,9 +956,7 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
         this->PrimaryFromReduction = true;
         ++this->NumberOfRecasts;
         reduced = levels = false; // the G-buffer changes: reduce it again below
-        in.Grid->Update(
-          camera, act->GetMatrix(), ren->GetTiledAspectRatio(), primaryHeight, maxHeight);
-        this->FitGrid(ren, act, width, height);
+        castGrid();
         in.GridPass->Render(&renderState);
         if (!this->RenderGBuffer(ren, act, width, height))
         {
@@ -995,8 +998,7 @@ void vtkGlobeMapper::FitGrid(vtkRenderer* ren, vtkActor* act, int width, int hei
   }
   // The grid follows the viewport (not Modified(): a window resize rebuilds nothing else), or
   // the grid's own span on screen where that is shorter (the whole planet in part of the
-  // window), rounded up to 16 points so that nearby views share a size; recomputed after every
-  // cast of the grid, so that a view always gets the same grid.
+  // window), rounded up to 16 points so that nearby views share a size.
   auto& in = *this->Internals;
   const double side = std::max(width, height);
   const double windowPoints = std::ceil(side / this->GridPixelsPerCell);
