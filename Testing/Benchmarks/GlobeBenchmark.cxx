@@ -8,7 +8,7 @@
 //
 //   GlobeBenchmark [--quick] [--frames N] [--json PATH] [--scene NAME]... [--window WxH]
 //                  [--effects-only] [--grid-only] [--refinement-only] [--no-matrix]
-//                  [--conditions TEXT] [--help]
+//                  [--still] [--conditions TEXT] [--help]
 //
 // Scenes (window 800 x 600 unless --window; one window, renderer and globe for everything):
 //   earth      the whole Earth from 22,000 km;
@@ -41,7 +41,8 @@
 //                clips the terrain of every close view: the depth family shows that on PGM).
 // Measured per setting, in the same run:
 //   time: warm-up frames, then >= 30 timed frames (Render + glFinish, wall clock) alternating
-//     between the view and the view turned by a quarter pixel (no frame can reuse the last):
+//     between the view and the view turned by a quarter pixel (no frame can reuse the last;
+//     --still: the view alone, so no frame waits for a new view's reduction):
 //     median, quartiles; per-stage GPU medians from the mapper's timer queries. Configurations
 //     slower than 20 s get 2 warm-up and >= 10 timed frames ("frames_reduced": true).
 //   terrain: at every sample pixel (a regular grid of ~20,000), the exact ray/terrain hit E
@@ -176,6 +177,7 @@ struct Options
   bool GridOnly = false;
   bool RefinementOnly = false;
   bool Matrix = true;
+  bool Still = false; // time every frame at view A: no frame pays a new view's reduction wait
   int Frames = 30;
   int Warmup = 5;
   std::string Json = "benchmark.json";
@@ -1390,7 +1392,7 @@ Timing Benchmark::Time(
   vtkCamera* camera = this->Scene.Renderer->GetActiveCamera();
   int frame = 0;
   auto renderFrame = [&]() {
-    const Pose& p = frame % 2 ? b : a;
+    const Pose& p = frame % 2 && !this->Opt.Still ? b : a;
     camera->SetPosition(p.Eye);
     camera->SetFocalPoint(p.Focal);
     camera->SetViewUp(p.Up);
@@ -2032,7 +2034,8 @@ bool Benchmark::WriteJson(double totalSeconds)
     << ", \"timer_queries\": " << (vtkOpenGLRenderTimer::IsSupported() ? "true" : "false")
     << ", \"loadavg_start\": " << JsonString(this->LoadStart)
     << ", \"loadavg_end\": " << JsonString(LoadAverage()) << "},\n";
-  j << "  \"settings\": {\"quick\": " << (this->Opt.Quick ? "true" : "false")
+  j << "  \"settings\": {\"still\": " << (this->Opt.Still ? "true" : "false")
+    << ", \"quick\": " << (this->Opt.Quick ? "true" : "false")
     << ", \"frames\": " << this->Opt.Frames << ", \"warmup\": " << this->Opt.Warmup
     << ", \"window\": [" << this->Opt.Window.X << ", " << this->Opt.Window.Y << "]"
     << ", \"seconds_per_configuration\": " << JsonNumber(this->Opt.SecondsPerConfiguration)
@@ -2215,7 +2218,7 @@ void Usage(const char* program)
   std::printf(
     "usage: %s [--quick] [--frames N] [--json PATH] [--scene NAME]... [--window WxH]\n"
     "          [--effects-only] [--grid-only] [--refinement-only] [--no-matrix]\n"
-    "          [--conditions TEXT] [--help]\n"
+    "          [--still] [--conditions TEXT] [--help]\n"
     "  Sweeps the PGM globe's settings (grid, grid relative to the window, depth mode and\n"
     "  clipping, composition, effects) on the scenes earth, rainier, everest and satellite, with\n"
     "  VTK's naive globes (a textured sphere, warped lon/lat meshes) on the same scenes; frame\n"
@@ -2232,6 +2235,9 @@ void Usage(const char* program)
     "  --scene NAME    only this scene (repeatable)\n"
     "  --window WxH    the scenes' window (default 800x600)\n"
     "  --no-matrix     skip the grid x window matrix\n"
+    "  --still         time every frame at the scene's view instead of alternating it with\n"
+    "                  the view turned by 1/4 px: no timed frame is a new view, so none waits\n"
+    "                  for its reduction (vtkGlobeMapper's first-frame-after-a-move readback)\n"
     "  --frames N      timed frames per configuration (default 30; slow ones get fewer)\n"
     "  --conditions T  free text stored in the JSON (machine load during the run)\n"
     "  --json PATH     where to write the numbers (default benchmark.json)\n",
@@ -2265,6 +2271,10 @@ int main(int argc, char* argv[])
       options.RefinementOnly = true;
       options.Matrix = false;
       options.Meshes.clear();
+    }
+    else if (arg == "--still")
+    {
+      options.Still = true;
     }
     else if (arg == "--no-matrix")
     {

@@ -10,9 +10,10 @@
 #   WINDOWS="..." otherwise, --grid-only in these windows (default 800x600 1600x1200 400x300)
 #   COST=1        also GlobeCostBenchmark (cost.json)
 #   BENCH_ARGS    more arguments for GlobeBenchmark; TLIM: seconds per benchmark (default 150)
-#   AB=DIR        instead: GlobeBenchmark $BENCH_ARGS with the packed libraries (a1), with the
-#                 libraries in DIR (relative to the tree, e.g. a rebuilt libvtkGlobeRendering.so.1)
-#                 ahead of them (b), and packed again (a2): before and after in one run
+#   AB="DIR..."   instead: GlobeBenchmark $BENCH_ARGS with the packed libraries (a1), with the
+#                 libraries in each DIR (relative to the tree, e.g. a rebuilt
+#                 libvtkGlobeRendering.so.1) ahead of them (b-DIRNAME), and packed again (a2):
+#                 before and after in one run
 #   BENCH_BIN=F   run this GlobeBenchmark (relative to the tree) instead of the packed one
 #   FORCE_MESA=1  render with the carried Mesa (softpipe) instead: a dry run on any machine
 set -u
@@ -20,8 +21,12 @@ R="$PWD"
 OUT="${OUT:-/tmp/gk-out}"
 mkdir -p "$OUT"
 T0=$(date +%s)
-python3 -c "import tarfile; tarfile.open('.gk/gk.tar.xz').extractall('/opt')" || exit 3
-echo "unpacked in $(($(date +%s) - T0)) s"
+# A second run in the same machine reuses the unpacked bundle and the X server.
+if ! [ -e /opt/gk/.unpacked ]; then
+  python3 -c "import tarfile; tarfile.open('.gk/gk.tar.xz').extractall('/opt')" || exit 3
+  touch /opt/gk/.unpacked
+  echo "unpacked in $(($(date +%s) - T0)) s"
+fi
 G=/opt/gk
 LD=$G/lib/ld-linux-x86-64.so.2
 NV=$(for d in /usr/local/nvidia/lib64 /usr/local/nvidia/lib /usr/lib/x86_64-linux-gnu /usr/lib64; do
@@ -38,9 +43,11 @@ if ! [ -x /usr/bin/xkbcomp ]; then
   printf '#!/bin/sh\nexec %s --library-path %s %s/bin/xkbcomp "$@"\n' "$LD" "$G/lib" "$G" > /usr/bin/xkbcomp
   chmod +x /usr/bin/xkbcomp
 fi
-GALLIUM_DRIVER=softpipe DRAW_USE_LLVM=0 LIBGL_DRIVERS_PATH=$G/dri "$LD" --library-path "$G/lib" \
-  "$G/bin/Xvfb" :97 -screen 0 2048x1536x24 -nolisten tcp -xkbdir "$G/xkb" > /tmp/xvfb.log 2>&1 &
-sleep 3
+if ! [ -e /tmp/.X11-unix/X97 ]; then
+  GALLIUM_DRIVER=softpipe DRAW_USE_LLVM=0 LIBGL_DRIVERS_PATH=$G/dri "$LD" --library-path "$G/lib" \
+    "$G/bin/Xvfb" :97 -screen 0 2048x1536x24 -nolisten tcp -xkbdir "$G/xkb" > /tmp/xvfb.log 2>&1 &
+  sleep 3
+fi
 export DISPLAY=:97 LIBGL_DRIVERS_PATH=$G/dri
 if [ -n "${FORCE_MESA:-}" ]; then
   export GALLIUM_DRIVER=softpipe DRAW_USE_LLVM=0
@@ -59,10 +66,13 @@ B="$G/bin/GlobeBenchmark"
 renderer=$(sed -n 's/.*renderer string: //p' /tmp/glx.txt)
 conditions="$renderer (Utilities/device/run.sh: Xvfb, glvnd's NVIDIA GLX; the Debian 12 runtime carried; glibc malloc tuned)"
 if [ -n "${AB:-}" ]; then
-  for run in a1 b a2; do
+  # Each run as NAME:LIBRARY-PATH-PREFIX.
+  set -- "a1:"
+  for dir in $AB; do set -- "$@" "b-$(basename "$dir"):$R/$dir:"; done
+  for item in "$@" "a2:"; do
+    run=${item%%:*}
+    lp=${item#*:}$LP
     echo "== $run"
-    lp=$LP
-    [ "$run" = b ] && lp="$R/$AB:$LP"
     timeout "${TLIM:-150}" "$LD" --library-path "$lp" "$B" \
       --conditions "$conditions; $run" --json "$OUT/$run.json" ${BENCH_ARGS:-} > "$OUT/$run.txt" 2>&1
     echo "rc $?"

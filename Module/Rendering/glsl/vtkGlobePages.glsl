@@ -56,13 +56,33 @@ float globe_pageAt(sampler2DArray atlas, vec3 c, vec2 offset, bool nearest)
                  : textureLod(atlas, q, 0.0).r;
 }
 
+// The page's height at atlas coordinates c, bilinear with float weights (globe_heightLod says
+// why the hardware's are not used for heights); the page's border holds the neighbours.
+float globe_pageBilinear(sampler2DArray atlas, vec3 c)
+{
+  int T = int(globePageGeometry.x + 2.0 * globePageGeometry.y);
+  vec2 x = c.xy * float(T) - 0.5;
+  vec2 i = floor(x);
+  vec2 f = x - i;
+  ivec2 i0 = clamp(ivec2(i), ivec2(0), ivec2(T - 1));
+  ivec2 i1 = clamp(ivec2(i) + 1, ivec2(0), ivec2(T - 1));
+  int slot = int(c.z);
+  float a = texelFetch(atlas, ivec3(i0, slot), 0).r;
+  float b = texelFetch(atlas, ivec3(i1.x, i0.y, slot), 0).r;
+  float cc = texelFetch(atlas, ivec3(i0.x, i1.y, slot), 0).r;
+  float d = texelFetch(atlas, ivec3(i1, slot), 0).r;
+  return mix(mix(a, b, f.x), mix(cc, d, f.x), f.y);
+}
+
 // Heights at t and one level-0 texel east, west, north and south of it (the gradient) in the
 // page at atlas coordinates c (scale: atlas units per level-0 texel): the neighbours lie in the
 // same page or its border (two texels, at least one level-0 texel at every level).
 void globe_pageHeightsAt(sampler2DArray atlas, vec3 c, vec2 s, bool nearest, out float v,
   out vec4 ewns)
 {
-  v = globe_pageAt(atlas, c, vec2(0.0), nearest);
+  // The value with float weights (where rays along the ground read it); the gradient's
+  // neighbours through the hardware (their weights' error only slows a Newton step).
+  v = nearest ? globe_pageAt(atlas, c, vec2(0.0), true) : globe_pageBilinear(atlas, c);
   ewns = vec4(globe_pageAt(atlas, c, vec2(s.x, 0.0), nearest),
     globe_pageAt(atlas, c, vec2(-s.x, 0.0), nearest),
     globe_pageAt(atlas, c, vec2(0.0, -s.y), nearest),
