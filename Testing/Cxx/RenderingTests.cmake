@@ -63,7 +63,9 @@ list(APPEND globe_rendering_tests
 # above the EGM96 geoid against PROJ.
 list(APPEND globe_rendering_tests
   TestGlobeGeodeticEdges.cxx
-  TestGlobeVerticalDatum.cxx)
+  TestGlobeVerticalDatum.cxx
+  # Heights filtered with float weights, not the texture unit's 8-bit ones.
+  TestGlobeHeightFiltering.cxx)
 # Cost (issue 19): layers out of the view are culled, and the composition skips the sky,
 # without changing a pixel.
 list(APPEND globe_rendering_tests
