@@ -11,11 +11,17 @@
 #include "vtkGlobePageSource.h"
 #include "vtkGlobeFootprint.h"
 #include "vtkGlobePages.h"
+#include "vtkGlobeShaderSources.h"
 #include "vtkDoubleArray.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
@@ -326,6 +332,9 @@ public:
   int NextAdded = 0;
   double MinimumHeight = 0.0;
   double MaximumHeight = 0.0;
+  // The texture-unit probe (FiltersFloatTexturesExactly): its window and answer.
+  vtkOpenGLRenderWindow* ProbedWindow = nullptr;
+  int FiltersExactly = -1;
 
   void Retire(Entry& e)
   {
@@ -822,9 +831,93 @@ int vtkGlobeLayerSet::GetNumberOfActiveLayers(vtkGlobeLayer::Roles role)
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// Whether this OpenGL's texture unit filters float textures with float weights: a 2 x 1 R32F
+// texture holding 0 and 1, read linearly at 64 fractions f between its texels, must give f to
+// float rounding (8-bit weights, NVIDIA's, miss by up to 2e-3). Where the probe cannot run,
+// false: the shader filters, which is right everywhere.
+bool FiltersFloatTexturesExactly(vtkOpenGLRenderWindow* window)
+{
+  constexpr int n = 64;
+  vtkOpenGLState* state = window->GetState();
+  const vtkGlobeShaderSources::ScopedOffscreenPass offscreen(state);
+  vtkNew<vtkTextureObject> ramp, target;
+  ramp->SetContext(window);
+  target->SetContext(window);
+  float values[2] = { 0.0f, 1.0f };
+  ramp->SetWrapS(vtkTextureObject::ClampToEdge);
+  ramp->SetWrapT(vtkTextureObject::ClampToEdge);
+  ramp->SetMinificationFilter(vtkTextureObject::Linear);
+  ramp->SetMagnificationFilter(vtkTextureObject::Linear);
+  bool exact = false;
+  if (ramp->Create2DFromRaw(2, 1, 1, VTK_FLOAT, values) && target->Create2D(n, 1, 4, VTK_FLOAT, false))
+  {
+    vtkNew<vtkOpenGLFramebufferObject> framebuffer;
+    framebuffer->SetContext(window);
+    framebuffer->Bind();
+    framebuffer->AddColorAttachment(0, target);
+    framebuffer->ActivateDrawBuffers(1);
+    const std::string vs = vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader();
+    const char* fs = "//VTK::System::Dec\n"
+                     "//VTK::Output::Dec\n"
+                     "in vec2 texCoord;\n"
+                     "uniform sampler2D ramp;\n"
+                     "void main()\n"
+                     "{\n"
+                     "  float f = (floor(texCoord.x * 64.0) + 0.371) / 64.0;\n"
+                     "  gl_FragData[0] = vec4(textureLod(ramp, vec2((0.5 + f) / 2.0, 0.5), 0.0).r, f, 0.0, 1.0);\n"
+                     "}\n";
+    vtkOpenGLQuadHelper quad(window, vs.c_str(), fs, "");
+    if (quad.Program && quad.Program->GetCompiled() &&
+      framebuffer->CheckFrameBufferStatus(GL_FRAMEBUFFER))
+    {
+      window->GetShaderCache()->ReadyShaderProgram(quad.Program);
+      ramp->Activate();
+      quad.Program->SetUniformi("ramp", ramp->GetTextureUnit());
+      state->vtkglViewport(0, 0, n, 1);
+      quad.Render();
+      ramp->Deactivate();
+      float read[4 * n];
+      framebuffer->ActivateReadBuffer(0);
+      glReadPixels(0, 0, n, 1, GL_RGBA, GL_FLOAT, read);
+      exact = true;
+      for (int i = 0; i < n; ++i)
+      {
+        exact = exact && std::abs(read[4 * i] - read[4 * i + 1]) <= 1e-6f;
+      }
+    }
+    if (quad.Program)
+    {
+      quad.Program->ReleaseGraphicsResources(window);
+    }
+    framebuffer->ReleaseGraphicsResources(window);
+  }
+  ramp->ReleaseGraphicsResources(window);
+  target->ReleaseGraphicsResources(window);
+  return exact;
+}
+} // namespace
+
+int vtkGlobeLayerSet::GetTextureUnitFiltersExactly()
+{
+  return this->Internals->FiltersExactly;
+}
+
+bool vtkGlobeLayerSet::GetFiltersHeightsInShader()
+{
+  return this->HeightFiltering == HeightFilteringShader ||
+    (this->HeightFiltering == HeightFilteringAutomatic && this->Internals->FiltersExactly != 1);
+}
+
 void vtkGlobeLayerSet::UploadTextures(vtkOpenGLRenderWindow* window, bool waitForPages)
 {
   this->Internals->ReleaseRetired(window);
+  if (this->Internals->ProbedWindow != window)
+  {
+    this->Internals->ProbedWindow = window;
+    this->Internals->FiltersExactly = FiltersFloatTexturesExactly(window) ? 1 : 0;
+  }
   for (auto& held : this->Internals->Entries)
   {
     Entry& e = *held;
@@ -1137,6 +1230,7 @@ std::string vtkGlobeLayerSet::GetShaderKey(int roles)
   std::ostringstream key;
   // The passes' own code differs with the geodetic precision even without layers.
   key << (this->HighPrecisionGeodetic ? "H:" : "F:");
+  key << (this->GetFiltersHeightsInShader() ? "S:" : "T:");
   for (int role = 0; role < NumberOfRoles; ++role)
   {
     if (!Included(role, roles) || in.Composed[role].empty())
@@ -1205,6 +1299,10 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
        "float globe_heightStretch = 1.0;\n#endif\n";
   if (streamed[0] || streamed[1])
   {
+    if (this->GetFiltersHeightsInShader())
+    {
+      s << "#define GLOBE_HEIGHTS_IN_SHADER\n";
+    }
     s << vtkGlobePages;
   }
   // Shared helpers: texture coordinates of a geographic layer, the coverage weight with its
@@ -1595,8 +1693,11 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
           // The streamed layers' level (the polar rule included), so both filter alike.
           s << "    float lod = max(globe_footprintLodHeights(vec4(" << Size(e, p) << ", 64.0, 0.0), dx, dy, "
             << (e->Function.empty() ? "min(globe_heightStretch, 10.0 * cosLat)" : "globe_heightStretch") << "), least);\n"
-            << "    float v = globe_heightLod(" << p << ", uvs, lod, " << p << "Levels, "
-            << (e->Wraps ? "true" : "false") << ");\n"
+            << "    float v = " << (this->GetFiltersHeightsInShader()
+                                ? "globe_heightLod(" + p + ", uvs, lod, " + p + "Levels, " +
+                                  (e->Wraps ? "true" : "false") + ")"
+                                : "textureLod(" + p + ", uvs, lod).r")
+            << ";\n"
             << "    float vE = textureLod(" << p << ", uvs + vec2(texel.x, 0.0), lod).r;\n"
             << "    float vW = textureLod(" << p << ", uvs - vec2(texel.x, 0.0), lod).r;\n"
             << "    float vN = textureLod(" << p << ", uvs - vec2(0.0, texel.y), lod).r;\n"
@@ -2228,6 +2329,8 @@ void vtkGlobeLayerSet::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfUploads: " << this->NumberOfUploads << "\n";
   os << indent << "HighPrecisionGeodetic: " << this->HighPrecisionGeodetic << "\n";
   os << indent << "FootprintFiltering: " << this->FootprintFiltering << "\n";
+  os << indent << "HeightFiltering: " << this->HeightFiltering << " (texture unit exact: "
+     << this->Internals->FiltersExactly << ")\n";
   os << indent << "GeodeticReference: " << vtkMath::DegreesFromRadians(this->ReferenceLonLat[0])
      << ", " << vtkMath::DegreesFromRadians(this->ReferenceLonLat[1]) << " deg\n";
 }

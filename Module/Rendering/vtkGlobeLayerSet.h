@@ -174,6 +174,28 @@ public:
   ///@}
 
   ///@{
+  /**
+   * How height layers are filtered (Documentation/composition.md, "Exact height filtering").
+   * Automatic (the default): in the shader with float weights, unless this OpenGL's texture
+   * unit filters float textures exactly itself (probed once per window: llvmpipe does; GPUs,
+   * with 8-bit weights, do not). Shader: always in the shader. Hardware: always the texture
+   * unit, as before 2026-11-28. Part of GetShaderKey().
+   */
+  enum HeightFilteringModes
+  {
+    HeightFilteringAutomatic,
+    HeightFilteringShader,
+    HeightFilteringHardware
+  };
+  vtkSetClampMacro(HeightFiltering, int, HeightFilteringAutomatic, HeightFilteringHardware);
+  vtkGetMacro(HeightFiltering, int);
+  /// Whether the programs filter heights in the shader (the mode, and the probe's answer).
+  bool GetFiltersHeightsInShader();
+  /// The probe's answer for the last window: 1 exact, 0 not, -1 not probed (yet).
+  int GetTextureUnitFiltersExactly();
+  ///@}
+
+  ///@{
   /// Hi + lo geodetic (lon, lat) from a local origin (default on); part of GetShaderKey().
   vtkSetMacro(HighPrecisionGeodetic, bool);
   vtkGetMacro(HighPrecisionGeodetic, bool);
@@ -217,6 +239,7 @@ protected:
   int NumberOfCulledLayers = 0;
   bool HighPrecisionGeodetic = true;
   bool FootprintFiltering = true;
+  int HeightFiltering = HeightFilteringAutomatic;
   double ReferenceDirection[3] = { 1.0, 0.0, 0.0 };
   double ReferenceLonLat[2] = { 0.0, 0.0 };
   double PlausibleHeightRange[2] = { -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };

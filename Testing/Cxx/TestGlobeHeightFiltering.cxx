@@ -12,6 +12,7 @@
 #include "vtkGlobeEllipsoid.h"
 #include "vtkGlobeGridPass.h"
 #include "vtkGlobeLayer.h"
+#include "vtkGlobeLayerSet.h"
 #include "vtkGlobeMapper.h"
 #include "vtkGlobeProjectiveGrid.h"
 #include "vtkGlobeRenderingTestHelpers.h"
@@ -55,6 +56,11 @@ int TestGlobeHeightFiltering(int, char*[])
     { "magnified, 150 km above", { c[0], c[1], 1.5e5 }, { c[0], c[1], 0 } },
     { "oblique from 3 km, 20 km south", { c[0], c[1] - 0.18, 3e3 }, { c[0], c[1], 0 } } };
   bool ok = true;
+  // Automatic must be exact wherever it runs (it filters in the shader unless the texture unit
+  // is exact); Shader always is.
+  for (int mode : { vtkGlobeLayerSet::HeightFilteringAutomatic, vtkGlobeLayerSet::HeightFilteringShader })
+  {
+  scene.Mapper->GetLayerSet()->SetHeightFiltering(mode);
   for (const View& v : views)
   {
     vtkGlobeTest::LookAt(scene.Renderer, body, v.Camera, v.Target, 30.0);
@@ -153,11 +159,17 @@ int TestGlobeHeightFiltering(int, char*[])
         largest = std::max(largest, bound);
       }
     }
-    std::printf("%s: %d of %d grid points on the layer (texel %.0f m); the bound's largest %.3f m "
-                "(8-bit weights: up to %.2f m)\n",
-      v.Name, inside, g * g, texel, largest, 1000.0 / 512.0);
+    vtkGlobeLayerSet* set = scene.Mapper->GetLayerSet();
+    std::printf("%s, %s (texture unit exact: %d, heights filtered in the shader: %d): %d of %d "
+                "grid points on the layer (texel %.0f m); the bound's largest %.3f m (8-bit "
+                "weights: up to %.2f m)\n",
+      mode == vtkGlobeLayerSet::HeightFilteringShader ? "shader" : "automatic", v.Name,
+      set->GetTextureUnitFiltersExactly(), set->GetFiltersHeightsInShader() ? 1 : 0, inside,
+      g * g, texel, largest, 1000.0 / 512.0);
     ok &= inside > 200;
     ok &= error.Check(1.0);
+    ok &= set->GetTextureUnitFiltersExactly() >= 0;
+  }
   }
   std::printf("%s\n", ok ? "heights filtered exactly" : "FAILED");
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;

@@ -826,7 +826,7 @@ inline std::vector<double> MeshEdgeMap(Scene& scene)
  * represent there: a planar triangle of longest edge L deviates from the curved body by at
  * most L^2 / 6R, and from the data by its own deviation from linear over L (second
  * differences around the point), or, where L is more than 4 texels, by the local relief over
- * L; plus how the GPU samples (float coordinates, 8-bit filter weights, mipmap offset).
+ * L; plus how the GPU samples (float coordinates, a texel / 256 term, mipmap offset).
  */
 /// With a vtkGlobeDepthPass, depth is read back in its mode (depth modes, Documentation/depth.md).
 inline TerrainCheck CheckTerrain(Scene& scene, int stride, vtkGlobeDepthPass* depthPass = nullptr)
@@ -918,9 +918,11 @@ inline TerrainCheck CheckTerrain(Scene& scene, int stride, vtkGlobeDepthPass* de
       // How the GPU samples the data: where it samples (float (lon, lat), ~1 m on a planet, or
       // with HighPrecisionGeodetic the hi + lo conversion from the frame's local origin, within
       // 0.1 mm + 3e-7 of the distance from it (TestGlobeGeodeticPrecision A), and the layers'
-      // float texture coordinates), 8-bit bilinear weights (slope * texel / 256), and, where the
-      // grid is coarser than the texels, a mipmap level whose box filter is off-centre by up to
-      // half the grid spacing.
+      // float texture coordinates), slope * texel / 256 (written for 8-bit bilinear weights,
+      // which heights no longer use; TestGlobeNorthPole and TestGlobeTerrainQuery fail without
+      // it, so it covers sampling effects the other terms miss), and, where the grid is coarser
+      // than the texels, a mipmap level whose box filter is off-centre by up to half the grid
+      // spacing.
       const double texel = FinestTexel(layers, llh[0], llh[1], radius);
       double where = radius * 2.0 / 16777216.0 * 8.0;
       if (highPrecision)

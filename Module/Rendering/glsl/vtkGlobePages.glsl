@@ -80,9 +80,14 @@ float globe_pageBilinear(sampler2DArray atlas, vec3 c)
 void globe_pageHeightsAt(sampler2DArray atlas, vec3 c, vec2 s, bool nearest, out float v,
   out vec4 ewns)
 {
-  // The value with float weights (where rays along the ground read it); the gradient's
-  // neighbours through the hardware (their weights' error only slows a Newton step).
+  // The value with float weights (where rays along the ground read it) unless the texture
+  // unit filters exactly (vtkGlobeLayerSet::HeightFiltering); the gradient's neighbours
+  // through the texture unit (they set a Newton step's length, not where it converges).
+#ifdef GLOBE_HEIGHTS_IN_SHADER
   v = nearest ? globe_pageAt(atlas, c, vec2(0.0), true) : globe_pageBilinear(atlas, c);
+#else
+  v = globe_pageAt(atlas, c, vec2(0.0), nearest);
+#endif
   ewns = vec4(globe_pageAt(atlas, c, vec2(s.x, 0.0), nearest),
     globe_pageAt(atlas, c, vec2(-s.x, 0.0), nearest),
     globe_pageAt(atlas, c, vec2(0.0, -s.y), nearest),
