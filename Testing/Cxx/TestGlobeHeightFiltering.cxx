@@ -99,29 +99,6 @@ int TestGlobeHeightFiltering(int, char*[])
       body->CartesianToGeodeticQuiet(surface, llh[k].data());
       hit[k] = 1;
     }
-    // The grid's footprint (vtkGlobeGridHeightFS): the step to the nearer neighbour per axis.
-    auto shorterStep = [&](int i, int j, int di, int dj, double step[2]) {
-      const size_t k = static_cast<size_t>(j) * g + i;
-      double best = 1e300;
-      step[0] = step[1] = 1e30;
-      for (int sgn = -1; sgn <= 1; sgn += 2)
-      {
-        const int a = i + sgn * di, b = j + sgn * dj;
-        if (a < 0 || b < 0 || a >= g || b >= g || !hit[static_cast<size_t>(b) * g + a])
-        {
-          continue;
-        }
-        const double* o = llh[static_cast<size_t>(b) * g + a].data();
-        const double dLon = o[0] - llh[k][0], dLat = o[1] - llh[k][1];
-        const double l = std::hypot(dLon * std::cos(vtkMath::RadiansFromDegrees(llh[k][1])), dLat);
-        if (l > 0.0 && l < best)
-        {
-          best = l;
-          step[0] = dLon;
-          step[1] = dLat;
-        }
-      }
-    };
     vtkGlobeTest::Worst error("GPU height vs float-weight trilinear / bound", "");
     double largest = 0.0;
     int inside = 0;
@@ -138,8 +115,9 @@ int TestGlobeHeightFiltering(int, char*[])
         }
         ++inside;
         double footprint[4];
-        shorterStep(i, j, 1, 0, footprint);
-        shorterStep(i, j, 0, 1, footprint + 2);
+        // The grid's footprint (vtkGlobeGridHeightFS): the step to the nearer neighbour per axis.
+        vtkGlobeTest::GridShorterStep(llh, hit, g, i, j, 1, 0, 1e30, footprint);
+        vtkGlobeTest::GridShorterStep(llh, hit, g, i, j, 0, 1, 1e30, footprint + 2);
         const double expected = vtkGlobeTest::ComposedHeight(layers, p[0], p[1], footprint);
         // Float rounding of the value (1000 m), of where it is sampled (0.1 mm + 3e-7 of the
         // distance from the frame's local origin below the eye, TestGlobeGeodeticPrecision, and the layer's

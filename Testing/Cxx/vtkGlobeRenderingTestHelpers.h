@@ -687,6 +687,37 @@ struct TerrainCheck
   std::string Where;
 };
 
+/// The step (dLon, dLat, degrees) from grid point (i, j) of an n x n grid (geodetic llh, valid
+/// points) to its nearer valid neighbour on the ground along (di, dj): the grid pass's footprint
+/// per axis (vtkGlobeTerrain::GridFootprint). A zero step (neighbours sharing a horizon point)
+/// says nothing of the footprint; with no neighbour the step is (none, none).
+inline void GridShorterStep(const std::vector<std::array<double, 3>>& llh,
+  const std::vector<char>& valid, int n, int i, int j, int di, int dj, double none, double step[2])
+{
+  const size_t k = static_cast<size_t>(j) * n + i;
+  double best = 1e300;
+  step[0] = step[1] = none;
+  for (int s = -1; s <= 1; s += 2)
+  {
+    const int a = i + s * di, b = j + s * dj;
+    if (a < 0 || b < 0 || a >= n || b >= n || !valid[static_cast<size_t>(b) * n + a])
+    {
+      continue;
+    }
+    const double* o = llh[static_cast<size_t>(b) * n + a].data();
+    double dLon = o[0] - llh[k][0];
+    dLon -= 360.0 * std::floor(dLon / 360.0 + 0.5);
+    const double dLat = o[1] - llh[k][1];
+    const double l = std::hypot(dLon * std::cos(llh[k][1] * 3.14159265358979 / 180.0), dLat);
+    if (l > 0.0 && l < best)
+    {
+      best = l;
+      step[0] = dLon;
+      step[1] = dLat;
+    }
+  }
+}
+
 /**
  * The longest triangle edge (m) of the frame's PGM mesh covering each pixel: the grid of the
  * last frame rebuilt on the CPU (vtkGlobeProjectiveGrid, double, with the composed heights
@@ -721,32 +752,6 @@ inline std::vector<double> MeshEdgeMap(Scene& scene)
       valid[k] = 1;
     }
   }
-  // The grid step towards the nearer neighbour (on the ground) along one axis.
-  auto shorterStep = [&](int i, int j, int di, int dj, double step[2]) {
-    const size_t k = static_cast<size_t>(j) * n + i;
-    double best = 1e300;
-    step[0] = step[1] = 0.0;
-    for (int s = -1; s <= 1; s += 2)
-    {
-      const int a = i + s * di, b = j + s * dj;
-      if (a < 0 || b < 0 || a >= n || b >= n || !valid[static_cast<size_t>(b) * n + a])
-      {
-        continue;
-      }
-      const double* o = llhs[static_cast<size_t>(b) * n + a].data();
-      double dLon = o[0] - llhs[k][0];
-      dLon -= 360.0 * std::floor(dLon / 360.0 + 0.5);
-      const double dLat = o[1] - llhs[k][1];
-      const double l = std::hypot(dLon * std::cos(llhs[k][1] * 3.14159265358979 / 180.0), dLat);
-      // A zero step (neighbours sharing a horizon point) says nothing of the footprint.
-      if (l > 0.0 && l < best)
-      {
-        best = l;
-        step[0] = dLon;
-        step[1] = dLat;
-      }
-    }
-  };
   for (int j = 0; j < n; ++j)
   {
     for (int i = 0; i < n; ++i)
@@ -761,8 +766,8 @@ inline std::vector<double> MeshEdgeMap(Scene& scene)
       double normal[3] = { sdir[0] / radii[0], sdir[1] / radii[1], sdir[2] / radii[2] };
       const double nn = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
       double footprint[4];
-      shorterStep(i, j, 1, 0, footprint);
-      shorterStep(i, j, 0, 1, footprint + 2);
+      GridShorterStep(llhs, valid, n, i, j, 1, 0, 0.0, footprint);
+      GridShorterStep(llhs, valid, n, i, j, 0, 1, 0.0, footprint + 2);
       const double h = ComposedHeight(layers, llhs[k][0], llhs[k][1], footprint);
       double* w = &world[3 * k];
       for (int c = 0; c < 3; ++c)
