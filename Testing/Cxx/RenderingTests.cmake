@@ -194,5 +194,29 @@ foreach (test_name IN LISTS globe_antialiased_tests)
     set_tests_properties("${variant}.${test_name}" PROPERTIES TIMEOUT 600 ENVIRONMENT "${_globe_env}")
   endforeach ()
 endforeach ()
+# The same scenes with heights filtered in the shader (VTKGLOBE_TEST_HEIGHT_FILTERING=shader):
+# the path of GPUs whose texture unit filters with 8-bit weights, which llvmpipe's automatic
+# choice does not take (Documentation/composition.md "Exact height filtering"), whole and
+# streamed, against the same checks and baselines.
+set(globe_shader_filtered_tests
+  TestGlobeRainier
+  TestGlobeEverestSummit
+  TestGlobeInsetWalls
+  TestGlobeProjectedLayers
+  TestGlobeNorthPole)
+foreach (test_name IN LISTS globe_shader_filtered_tests)
+  foreach (variant IN ITEMS ShaderFiltered ShaderFilteredStreamed)
+    add_test(NAME "${variant}.${test_name}"
+      COMMAND GlobeRenderingCxxTests "${test_name}"
+        -D "${VTKGLOBE_DATA_DIR}"
+        -T "${_globe_temporary}"
+        -V "${_globe_baselines}/${test_name}.png")
+    set(_globe_env "VTKGLOBE_TEST_HEIGHT_FILTERING=shader")
+    if (variant STREQUAL "ShaderFilteredStreamed")
+      list(APPEND _globe_env "VTKGLOBE_TEST_STREAMING=1")
+    endif ()
+    set_tests_properties("${variant}.${test_name}" PROPERTIES TIMEOUT 600 ENVIRONMENT "${_globe_env}")
+  endforeach ()
+endforeach ()
 # TestGlobeTerrainClamp checks geodesics with GeographicLib.
 target_link_libraries(GlobeRenderingCxxTests PRIVATE ${GeographicLib_LIBRARIES})

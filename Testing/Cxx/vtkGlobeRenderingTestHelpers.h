@@ -7,6 +7,7 @@
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
 #include "vtkGlobeClippingRange.h"
+#include "vtkGlobeLayerSet.h"
 #include "vtkGlobeDepthPass.h"
 #include "vtkGlobeGridPass.h"
 #include "vtkGlobeEllipsoid.h"
@@ -231,6 +232,14 @@ struct Scene
     if (refinement)
     {
       this->Mapper->SetTerrainRefinement(std::atoi(refinement));
+    }
+    // VTKGLOBE_TEST_HEIGHT_FILTERING=shader filters heights in the shader whatever the texture
+    // unit (on llvmpipe the automatic choice keeps the texture unit, which is exact there): the
+    // path GPUs take, compiled and checked here (CTest's ShaderFiltered.* variants).
+    const char* filtering = std::getenv("VTKGLOBE_TEST_HEIGHT_FILTERING");
+    if (filtering && std::string(filtering) == "shader")
+    {
+      this->Mapper->GetLayerSet()->SetHeightFiltering(vtkGlobeLayerSet::HeightFilteringShader);
     }
     if (Streamed())
     {
