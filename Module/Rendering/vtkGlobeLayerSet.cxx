@@ -2289,6 +2289,11 @@ void vtkGlobeLayerSet::UnbindTextures(int roles)
 
 void vtkGlobeLayerSet::ReleaseGraphicsResources(vtkWindow* window)
 {
+  // A context made later at the same address is probed again.
+  if (this->Internals->ProbedWindow == window)
+  {
+    this->Internals->ProbedWindow = nullptr;
+  }
   this->Internals->ReleaseRetired(window);
   this->Internals->Pages->ReleaseGraphicsResources(window);
   for (GeoidTexture& g : this->Internals->Geoids)
