@@ -859,16 +859,17 @@ bool FiltersFloatTexturesExactly(vtkOpenGLRenderWindow* window)
     framebuffer->AddColorAttachment(0, target);
     framebuffer->ActivateDrawBuffers(1);
     const std::string vs = vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader();
-    const char* fs = "//VTK::System::Dec\n"
-                     "//VTK::Output::Dec\n"
-                     "in vec2 texCoord;\n"
-                     "uniform sampler2D ramp;\n"
-                     "void main()\n"
-                     "{\n"
-                     "  float f = (floor(texCoord.x * 64.0) + 0.371) / 64.0;\n"
-                     "  gl_FragData[0] = vec4(textureLod(ramp, vec2((0.5 + f) / 2.0, 0.5), 0.0).r, f, 0.0, 1.0);\n"
-                     "}\n";
-    vtkOpenGLQuadHelper quad(window, vs.c_str(), fs, "");
+    const std::string columns = std::to_string(n) + ".0";
+    const std::string fs = "//VTK::System::Dec\n"
+                           "//VTK::Output::Dec\n"
+                           "in vec2 texCoord;\n"
+                           "uniform sampler2D ramp;\n"
+                           "void main()\n"
+                           "{\n"
+                           "  float f = (floor(texCoord.x * " + columns + ") + 0.371) / " + columns + ";\n"
+                           "  gl_FragData[0] = vec4(textureLod(ramp, vec2((0.5 + f) / 2.0, 0.5), 0.0).r, f, 0.0, 1.0);\n"
+                           "}\n";
+    vtkOpenGLQuadHelper quad(window, vs.c_str(), fs.c_str(), "");
     if (quad.Program && quad.Program->GetCompiled() &&
       framebuffer->CheckFrameBufferStatus(GL_FRAMEBUFFER))
     {
@@ -1395,43 +1396,6 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
        "  if (!(te > 0.0) || !(tn > 0.0)) return 1.0;\n"
        "  return clamp(1.0 - abs(log(te / tn)) * invLogN, 0.0, 1.0);\n"
        "}\n"
-       // A height texture's value at uv, filtered as LINEAR_MIPMAP_LINEAR between levels 0 and
-       // levels.x (levels.y > 0: nearest, which the hardware does exactly) but with float
-       // weights: GPUs filter with 8-bit weights (a 256th of the step between two texels, up
-       // to metres on steep terrain), which rays along the ground magnify to pixels
-       // (Documentation/composition.md, "Exact height filtering").
-       "float globe_bilinear(sampler2D t, vec2 uv, int level, bool wraps)\n"
-       "{\n"
-       // The pyramid's sizes (vtkGlobeLayer::GetLevelData: floor(w / 2^l)); llvmpipe's
-       // textureSize(t, level) gave other ones for levels above 0 (Mesa 22.3).
-       "  ivec2 size = max(textureSize(t, 0) >> level, ivec2(1));\n"
-       "  vec2 x = uv * vec2(size) - 0.5;\n"
-       "  vec2 i = floor(x);\n"
-       "  vec2 f = x - i;\n"
-       "  ivec2 i0 = ivec2(i);\n"
-       "  ivec2 i1 = i0 + 1;\n"
-       "  if (wraps)\n"
-       "  {\n"
-       "    i0.x -= size.x * int(floor(float(i0.x) / float(size.x)));\n"
-       "    i1.x = i0.x + 1 == size.x ? 0 : i0.x + 1;\n"
-       "  }\n"
-       "  i0 = clamp(i0, ivec2(0), size - 1);\n"
-       "  i1 = clamp(i1, ivec2(0), size - 1);\n"
-       "  float a = texelFetch(t, i0, level).r;\n"
-       "  float b = texelFetch(t, ivec2(i1.x, i0.y), level).r;\n"
-       "  float c = texelFetch(t, ivec2(i0.x, i1.y), level).r;\n"
-       "  float d = texelFetch(t, i1, level).r;\n"
-       "  return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);\n"
-       "}\n"
-       "float globe_heightLod(sampler2D t, vec2 uv, float lod, vec2 levels, bool wraps)\n"
-       "{\n"
-       "  if (levels.y > 0.0) return textureLod(t, uv, lod).r;\n"
-       "  float l = lod > 0.0 ? min(lod, levels.x) : 0.0; // NaN: level 0\n"
-       "  int l0 = int(l);\n"
-       "  float f = l - float(l0);\n"
-       "  float a = globe_bilinear(t, uv, l0, wraps);\n"
-       "  return f > 0.0 ? mix(a, globe_bilinear(t, uv, l0 + 1, wraps), f) : a;\n"
-       "}\n"
        // Screen derivatives of texture coordinates; across a wrapping layer's seam they jump
        // by a whole turn, which would select the coarsest mipmap along a line of pixels.
        "void globe_uvDerivatives(vec2 uv, bool wraps, out vec2 dx, out vec2 dy)\n"
@@ -1440,6 +1404,47 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
        "  dy = dFdy(uv);\n"
        "  if (wraps) { dx.x -= floor(dx.x + 0.5); dy.x -= floor(dy.x + 0.5); }\n"
        "}\n";
+  if (this->GetFiltersHeightsInShader())
+  {
+    s << ""
+         // A height texture's value at uv, filtered as LINEAR_MIPMAP_LINEAR between levels 0 and
+         // levels.x (levels.y > 0: nearest, which the hardware does exactly) but with float
+         // weights: GPUs filter with 8-bit weights (a 256th of the step between two texels, up
+         // to metres on steep terrain), which rays along the ground magnify to pixels
+         // (Documentation/composition.md, "Exact height filtering").
+         "float globe_bilinear(sampler2D t, vec2 uv, int level, bool wraps)\n"
+         "{\n"
+         // The pyramid's sizes (vtkGlobeLayer::GetLevelData: floor(w / 2^l)); llvmpipe's
+         // textureSize(t, level) gave other ones for levels above 0 (Mesa 22.3).
+         "  ivec2 size = max(textureSize(t, 0) >> level, ivec2(1));\n"
+         "  vec2 x = uv * vec2(size) - 0.5;\n"
+         "  vec2 i = floor(x);\n"
+         "  vec2 f = x - i;\n"
+         "  ivec2 i0 = ivec2(i);\n"
+         "  ivec2 i1 = i0 + 1;\n"
+         "  if (wraps)\n"
+         "  {\n"
+         "    i0.x -= size.x * int(floor(float(i0.x) / float(size.x)));\n"
+         "    i1.x = i0.x + 1 == size.x ? 0 : i0.x + 1;\n"
+         "  }\n"
+         "  i0 = clamp(i0, ivec2(0), size - 1);\n"
+         "  i1 = clamp(i1, ivec2(0), size - 1);\n"
+         "  float a = texelFetch(t, i0, level).r;\n"
+         "  float b = texelFetch(t, ivec2(i1.x, i0.y), level).r;\n"
+         "  float c = texelFetch(t, ivec2(i0.x, i1.y), level).r;\n"
+         "  float d = texelFetch(t, i1, level).r;\n"
+         "  return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);\n"
+         "}\n"
+         "float globe_heightLod(sampler2D t, vec2 uv, float lod, vec2 levels, bool wraps)\n"
+         "{\n"
+         "  if (levels.y > 0.0) return textureLod(t, uv, lod).r;\n"
+         "  float l = lod > 0.0 ? min(lod, levels.x) : 0.0; // NaN: level 0\n"
+         "  int l0 = int(l);\n"
+         "  float f = l - float(l0);\n"
+         "  float a = globe_bilinear(t, uv, l0, wraps);\n"
+         "  return f > 0.0 ? mix(a, globe_bilinear(t, uv, l0 + 1, wraps), f) : a;\n"
+         "}\n";
+  }
 
   // Geoids of height layers (vertical datum Geoid): N and its gradient per radian, bilinear
   // between the nodes as vtkGlobeGeoid::GetUndulation (and PROJ) interpolate; w = 0 outside a
@@ -1498,7 +1503,7 @@ std::string vtkGlobeLayerSet::GetShaderCode(int roles)
       {
         s << "uniform sampler2D " << p << ";\n";
       }
-      if (role == vtkGlobeLayer::Height && !list[i]->Streamed)
+      if (role == vtkGlobeLayer::Height && !list[i]->Streamed && this->GetFiltersHeightsInShader())
       {
         s << "uniform vec2 " << p << "Levels;\n"; // top level, nearest (globe_heightLod)
       }
@@ -2182,7 +2187,7 @@ void vtkGlobeLayerSet::BindTextures(vtkShaderProgram* program, int roles)
         e->Texture->SetMaxLevel(top);
         e->Texture->Activate();
         program->SetUniformi(p.c_str(), e->Texture->GetTextureUnit());
-        if (layer->GetRole() == vtkGlobeLayer::Height)
+        if (layer->GetRole() == vtkGlobeLayer::Height && this->GetFiltersHeightsInShader())
         {
           const float levels[2] = { static_cast<float>(top), nearest ? 1.0f : 0.0f };
           program->SetUniform2f((p + "Levels").c_str(), levels);
