@@ -58,96 +58,98 @@ int TestGlobeHeightFiltering(int, char*[])
   bool ok = true;
   // Automatic must be exact wherever it runs (it filters in the shader unless the texture unit
   // is exact); Shader always is.
-  for (int mode : { vtkGlobeLayerSet::HeightFilteringAutomatic, vtkGlobeLayerSet::HeightFilteringShader })
+  for (int mode :
+    { vtkGlobeLayerSet::HeightFilteringAutomatic, vtkGlobeLayerSet::HeightFilteringShader })
   {
-  scene.Mapper->GetLayerSet()->SetHeightFiltering(mode);
-  for (const View& v : views)
-  {
-    vtkGlobeTest::LookAt(scene.Renderer, body, v.Camera, v.Target, 30.0);
-    scene.Renderer->ResetCameraClippingRange();
-    scene.Render();
-    scene.Render();
-    vtkGlobeGridPass* pass = scene.Mapper->GetGridPass();
-    vtkGlobeProjectiveGrid* grid = scene.Mapper->GetProjectiveGrid();
-    const int g = pass->GetResolution();
-    const std::vector<float> direction = vtkGlobeTest::ReadTexture(pass->GetDirectionTexture());
-    const std::vector<float> position = vtkGlobeTest::ReadTexture(pass->GetPositionTexture());
-    const std::vector<float> height = vtkGlobeTest::ReadTexture(pass->GetHeightTexture());
-    const double* eye = grid->GetEyeScaled();
-    const int comps = static_cast<int>(height.size() / (static_cast<size_t>(g) * g));
+    scene.Mapper->GetLayerSet()->SetHeightFiltering(mode);
+    for (const View& v : views)
+    {
+      vtkGlobeTest::LookAt(scene.Renderer, body, v.Camera, v.Target, 30.0);
+      scene.Renderer->ResetCameraClippingRange();
+      scene.Render();
+      scene.Render();
+      vtkGlobeGridPass* pass = scene.Mapper->GetGridPass();
+      vtkGlobeProjectiveGrid* grid = scene.Mapper->GetProjectiveGrid();
+      const int g = pass->GetResolution();
+      const std::vector<float> direction = vtkGlobeTest::ReadTexture(pass->GetDirectionTexture());
+      const std::vector<float> position = vtkGlobeTest::ReadTexture(pass->GetPositionTexture());
+      const std::vector<float> height = vtkGlobeTest::ReadTexture(pass->GetHeightTexture());
+      const double* eye = grid->GetEyeScaled();
+      const int comps = static_cast<int>(height.size() / (static_cast<size_t>(g) * g));
 
-    // Where the GPU sampled: its own float grid points (eye-relative, scaled space).
-    std::vector<std::array<double, 3>> llh(static_cast<size_t>(g) * g);
-    std::vector<char> hit(llh.size(), 0);
-    for (size_t k = 0; k < llh.size(); ++k)
-    {
-      if (!(direction[4 * k + 3] > 0.5f))
+      // Where the GPU sampled: its own float grid points (eye-relative, scaled space).
+      std::vector<std::array<double, 3>> llh(static_cast<size_t>(g) * g);
+      std::vector<char> hit(llh.size(), 0);
+      for (size_t k = 0; k < llh.size(); ++k)
       {
-        continue;
-      }
-      double s[3];
-      for (int i = 0; i < 3; ++i)
-      {
-        s[i] = eye[i] + position[4 * k + i];
-      }
-      const double norm = std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
-      double surface[3];
-      for (int i = 0; i < 3; ++i)
-      {
-        surface[i] = s[i] / norm * radii[i];
-      }
-      body->CartesianToGeodeticQuiet(surface, llh[k].data());
-      hit[k] = 1;
-    }
-    vtkGlobeTest::Worst error("GPU height vs float-weight trilinear / bound", "");
-    double largest = 0.0;
-    int inside = 0;
-    for (int j = 0; j < g; ++j)
-    {
-      for (int i = 0; i < g; ++i)
-      {
-        const size_t k = static_cast<size_t>(j) * g + i;
-        const double* p = llh[k].data();
-        if (!hit[k] || p[0] < west + 0.01 || p[0] > west + span - 0.01 || p[1] < south + 0.01 ||
-          p[1] > south + span - 0.01)
+        if (!(direction[4 * k + 3] > 0.5f))
         {
-          continue; // off the layer, or in its skirt
+          continue;
         }
-        ++inside;
-        double footprint[4];
-        // The grid's footprint (vtkGlobeGridHeightFS): the step to the nearer neighbour per axis.
-        vtkGlobeTest::GridShorterStep(llh, hit, g, i, j, 1, 0, 1e30, footprint);
-        vtkGlobeTest::GridShorterStep(llh, hit, g, i, j, 0, 1, 1e30, footprint + 2);
-        const double expected = vtkGlobeTest::ComposedHeight(layers, p[0], p[1], footprint);
-        // Float rounding of the value (1000 m), of where it is sampled (0.1 mm + 3e-7 of the
-        // distance from the frame's local origin below the eye, TestGlobeGeodeticPrecision, and the layer's
-        // float texture coordinates) times the steepest texel step (1000 m / texel).
-        const double below[3] = { v.Camera[0], v.Camera[1], 0.0 };
-        double centre[3];
-        body->GeodeticToCartesianQuiet(below, centre);
-        double here[3];
-        const double ground[3] = { p[0], p[1], 0.0 };
-        body->GeodeticToCartesianQuiet(ground, here);
-        const double away = std::sqrt(vtkMath::Distance2BetweenPoints(centre, here));
-        const double where = 1e-4 + 3e-7 * away + 3.0 / 16777216.0 * span * 111320.0;
-        const double bound = 1e-3 + 1000.0 / texel * where;
-        error.Add(std::abs(height[comps * k] - expected) / bound,
-          vtkGlobeTest::Format("grid point (%g, %g), |dh| %.4g m", i, j,
-            std::abs(height[comps * k] - expected)));
-        largest = std::max(largest, bound);
+        double s[3];
+        for (int i = 0; i < 3; ++i)
+        {
+          s[i] = eye[i] + position[4 * k + i];
+        }
+        const double norm = std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+        double surface[3];
+        for (int i = 0; i < 3; ++i)
+        {
+          surface[i] = s[i] / norm * radii[i];
+        }
+        body->CartesianToGeodeticQuiet(surface, llh[k].data());
+        hit[k] = 1;
       }
+      vtkGlobeTest::Worst error("GPU height vs float-weight trilinear / bound", "");
+      double largest = 0.0;
+      int inside = 0;
+      for (int j = 0; j < g; ++j)
+      {
+        for (int i = 0; i < g; ++i)
+        {
+          const size_t k = static_cast<size_t>(j) * g + i;
+          const double* p = llh[k].data();
+          if (!hit[k] || p[0] < west + 0.01 || p[0] > west + span - 0.01 || p[1] < south + 0.01 ||
+            p[1] > south + span - 0.01)
+          {
+            continue; // off the layer, or in its skirt
+          }
+          ++inside;
+          double footprint[4];
+          // The grid's footprint (vtkGlobeGridHeightFS): the step to the nearer neighbour per axis.
+          vtkGlobeTest::GridShorterStep(llh, hit, g, i, j, 1, 0, 1e30, footprint);
+          vtkGlobeTest::GridShorterStep(llh, hit, g, i, j, 0, 1, 1e30, footprint + 2);
+          const double expected = vtkGlobeTest::ComposedHeight(layers, p[0], p[1], footprint);
+          // Float rounding of the value (1000 m), of where it is sampled (0.1 mm + 3e-7 of the
+          // distance from the frame's local origin below the eye, TestGlobeGeodeticPrecision,
+          // and the layer's float texture coordinates) times the steepest texel step
+          // (1000 m / texel).
+          const double below[3] = { v.Camera[0], v.Camera[1], 0.0 };
+          double centre[3];
+          body->GeodeticToCartesianQuiet(below, centre);
+          double here[3];
+          const double ground[3] = { p[0], p[1], 0.0 };
+          body->GeodeticToCartesianQuiet(ground, here);
+          const double away = std::sqrt(vtkMath::Distance2BetweenPoints(centre, here));
+          const double where = 1e-4 + 3e-7 * away + 3.0 / 16777216.0 * span * 111320.0;
+          const double bound = 1e-3 + 1000.0 / texel * where;
+          error.Add(std::abs(height[comps * k] - expected) / bound,
+            vtkGlobeTest::Format("grid point (%g, %g), |dh| %.4g m", i, j,
+              std::abs(height[comps * k] - expected)));
+          largest = std::max(largest, bound);
+        }
+      }
+      vtkGlobeLayerSet* set = scene.Mapper->GetLayerSet();
+      std::printf("%s, %s (texture unit exact: %d, heights filtered in the shader: %d): %d of %d "
+                  "grid points on the layer (texel %.0f m); the bound's largest %.3f m (8-bit "
+                  "weights: up to %.2f m)\n",
+        mode == vtkGlobeLayerSet::HeightFilteringShader ? "shader" : "automatic", v.Name,
+        set->GetTextureUnitFiltersExactly(), set->GetFiltersHeightsInShader() ? 1 : 0, inside,
+        g * g, texel, largest, 1000.0 / 512.0);
+      ok &= inside > 200;
+      ok &= error.Check(1.0);
+      ok &= set->GetTextureUnitFiltersExactly() >= 0;
     }
-    vtkGlobeLayerSet* set = scene.Mapper->GetLayerSet();
-    std::printf("%s, %s (texture unit exact: %d, heights filtered in the shader: %d): %d of %d "
-                "grid points on the layer (texel %.0f m); the bound's largest %.3f m (8-bit "
-                "weights: up to %.2f m)\n",
-      mode == vtkGlobeLayerSet::HeightFilteringShader ? "shader" : "automatic", v.Name,
-      set->GetTextureUnitFiltersExactly(), set->GetFiltersHeightsInShader() ? 1 : 0, inside,
-      g * g, texel, largest, 1000.0 / 512.0);
-    ok &= inside > 200;
-    ok &= error.Check(1.0);
-    ok &= set->GetTextureUnitFiltersExactly() >= 0;
-  }
   }
   std::printf("%s\n", ok ? "heights filtered exactly" : "FAILED");
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
