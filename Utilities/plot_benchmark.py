@@ -27,12 +27,13 @@ import math
 import os
 import sys
 
-FAMILY_ORDER = ["baseline", "grid", "grid-window", "depth", "refinement", "precision", "composition",
-                "effects"]
+FAMILY_ORDER = ["baseline", "grid", "interactive", "grid-window", "depth", "refinement", "precision",
+                "composition", "effects"]
 # RGB, marker style (vtkPlotPoints: 1 cross, 2 plus, 3 square, 4 circle, 5 diamond)
 STYLE = {
     "baseline": ((0, 0, 0), 5),
     "grid": ((31, 119, 180), 4),
+    "interactive": ((227, 119, 194), 1),
     "grid-window": ((44, 160, 44), 3),
     "depth": ((214, 39, 40), 4),
     "refinement": ((23, 190, 207), 3),

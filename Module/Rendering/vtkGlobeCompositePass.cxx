@@ -26,6 +26,7 @@
 #include <array>
 #include <cmath>
 #include <vector>
+#include <utility>
 
 vtkStandardNewMacro(vtkGlobeCompositePass);
 
@@ -167,6 +168,8 @@ void vtkGlobeCompositePass::ReleaseGraphicsResources(vtkWindow* window)
   }
   this->Program = nullptr;
   this->ShaderKey.clear();
+  this->SpareProgram = nullptr;
+  this->SpareKey.clear();
   this->Timer->ReleaseGraphicsResources();
 }
 
@@ -194,9 +197,25 @@ void vtkGlobeCompositePass::Render(const vtkRenderState* s)
   {
     // VTK's shader cache keeps every program it compiled for the window's life (MiBs each on
     // Mesa): free the GL program of a variant no longer drawn; the cache recompiles it if it
-    // comes back.
-    this->Program->ReleaseGraphicsResources(window);
-    this->Program = nullptr;
+    // comes back. Only the other detail level's program is kept, while the level alone
+    // alternates (interaction), so that neither switch compiles.
+    if (this->RefinementSuspended != this->ProgramSuspended)
+    {
+      std::swap(this->Program, this->SpareProgram);
+      std::swap(this->ShaderKey, this->SpareKey);
+      std::swap(this->FragmentSource, this->SpareSource);
+      this->ProgramSuspended = this->RefinementSuspended;
+    }
+    else if (this->SpareProgram)
+    {
+      this->SpareProgram->ReleaseGraphicsResources(window); // a setting changed: stale too
+      this->SpareProgram = nullptr;
+    }
+    if (this->Program && key != this->ShaderKey)
+    {
+      this->Program->ReleaseGraphicsResources(window);
+      this->Program = nullptr;
+    }
   }
   if (!this->Program)
   {
@@ -204,6 +223,7 @@ void vtkGlobeCompositePass::Render(const vtkRenderState* s)
     this->Program = window->GetShaderCache()->ReadyShaderProgram(
       vtkGlobeCompositeVS, this->FragmentSource.c_str(), "");
     this->ShaderKey = key;
+    this->ProgramSuspended = this->RefinementSuspended;
     ++this->NumberOfShaderBuilds;
   }
   else
@@ -364,7 +384,8 @@ bool vtkGlobeCompositePass::Refines()
   // noise in the chord's sag, which a grazing ray turns into steps of hundreds of metres
   // (depth jitter of 181 px 10 m above the ground in TestGlobeJitter). Without them the
   // program, its key and its uniforms are those of no refinement.
-  return this->TerrainRefinement > 0 && this->Layers && this->Layers->GetHighPrecisionGeodetic();
+  return this->TerrainRefinement > 0 && !this->RefinementSuspended && this->Layers &&
+    this->Layers->GetHighPrecisionGeodetic();
 }
 
 int vtkGlobeCompositePass::GetRoles()
@@ -536,7 +557,8 @@ void vtkGlobeCompositePass::PrintSelf(ostream& os, vtkIndent indent)
      << (this->NightLights ? "NightLights " : "") << (this->SpecularWater ? "SpecularWater " : "")
      << (this->Atmosphere ? "Atmosphere " : "") << (this->Graticule ? "Graticule " : "")
      << (this->Contours ? "Contours" : "") << "\n";
-  os << indent << "TerrainRefinement: " << this->TerrainRefinement << "\n";
+  os << indent << "TerrainRefinement: " << this->TerrainRefinement
+     << (this->RefinementSuspended ? " (suspended)" : "") << "\n";
   os << indent << "BlockCulling: " << this->BlockCulling << "\n";
   os << indent << "ShaderKey: " << this->ShaderKey << "\n";
   os << indent << "NumberOfShaderBuilds: " << this->NumberOfShaderBuilds << "\n";

@@ -164,6 +164,16 @@ public:
   vtkGetMacro(TerrainRefinement, int);
   ///@}
 
+  ///@{
+  /**
+   * Per frame (the mapper's interactive detail, vtkGlobeMapper::SetAutoAdjustDetail): draw
+   * without refinement whatever TerrainRefinement says. Not Modified(). The program of the
+   * other level is kept while only the level alternates, so switching compiles nothing.
+   */
+  void SetRefinementSuspended(bool suspended) { this->RefinementSuspended = suspended; }
+  bool GetRefinementSuspended() { return this->RefinementSuspended; }
+  ///@}
+
   /**
    * What the refinement needs of the frame (the mapper sets it with the G-buffer):
    * - chord[4]: (r'x, r'y, r'z, C) such that 1 - |u|^2 = -C - 2 o.r' - o.o for the G-buffer's
@@ -176,7 +186,7 @@ public:
   void SetRefinementFrame(const double chord[4], const double clipW[4], const double depthMap[3]);
 
   /// Whether the program refines: TerrainRefinement > 0 with high-precision geodetic
-  /// coordinates (Documentation/rendering.md "Terrain refinement").
+  /// coordinates (Documentation/rendering.md "Terrain refinement"), not suspended.
   bool Refines();
 
   /// The description the program is generated from (layers and effects).
@@ -225,6 +235,7 @@ protected:
   double Eye[3] = { 0, 0, 0 };
   double ClipToEye[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
   int TerrainRefinement = 1;
+  bool RefinementSuspended = false;
   double Chord[4] = { 0, 0, 0, -1 };
   double ClipW[4] = { 0, 0, 0, 0 };
   double DepthMap[3] = { 0, 0, 0 };
@@ -238,6 +249,12 @@ protected:
   bool BlockCulling = true;
   std::string ShaderKey;
   std::string FragmentSource;
+  // The program of the other detail level (refinement suspended or not), and the level the
+  // current one was built for.
+  vtkShaderProgram* SpareProgram = nullptr;
+  std::string SpareKey;
+  std::string SpareSource;
+  bool ProgramSuspended = false;
   vtkOpenGLRenderTimer* Timer = nullptr;
   int NumberOfShaderBuilds = 0;
 

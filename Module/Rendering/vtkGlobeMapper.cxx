@@ -34,15 +34,19 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+#include "vtkTimerLog.h"
 #include "vtk_glew.h"
 
 #include "vtkGlobeRasterFS.h"
 #include "vtkGlobeRasterVS.h"
 #include "vtkGlobeReductionFS.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <deque>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -71,11 +75,74 @@ public:
   vtkSmartPointer<vtkTextureObject> GDepth;
   vtkSmartPointer<vtkOpenGLFramebufferObject> GFramebuffer;
 
-  // The grid mesh: no vertex attributes, only indices; vertices fetch their grid point.
+  // The grid mesh: no vertex attributes, only indices; vertices fetch their grid point. The
+  // last two grid sizes' indices are kept (the full and the interactive detail's), the one
+  // drawn last first.
   vtkNew<vtkOpenGLVertexArrayObject> VAO;
-  vtkSmartPointer<vtkOpenGLBufferObject> Indices;
-  int IndexResolution = 0;
-  size_t IndexCount = 0;
+  struct GridIndices
+  {
+    int Resolution = 0;
+    vtkSmartPointer<vtkOpenGLBufferObject> Buffer;
+    size_t Count = 0;
+  };
+  std::vector<GridIndices> Indices;
+
+  // Interactive detail: this frame's level, the fixed grid size it divides, and the GPU
+  // timers of the last frames with the level each drew (read when done; none waits).
+  bool Interactive = false;
+  int FixedResolution = 512;
+  std::deque<std::pair<std::unique_ptr<vtkOpenGLRenderTimer>, bool>> FrameTimers;
+  double FrameStart = -1.0; // CPU clock without timer queries (s)
+
+  void StartFrameTimer()
+  {
+    if (!vtkOpenGLRenderTimer::IsSupported())
+    {
+      this->FrameStart = vtkTimerLog::GetUniversalTime();
+      return;
+    }
+    if (!this->FrameTimers.empty() && !this->FrameTimers.back().first->Stopped())
+    {
+      this->FrameTimers.back().first->ReleaseGraphicsResources(); // a frame that stopped early
+      this->FrameTimers.pop_back();
+    }
+    if (this->FrameTimers.size() < 8)
+    {
+      this->FrameTimers.emplace_back(new vtkOpenGLRenderTimer, this->Interactive);
+      this->FrameTimers.back().first->Start();
+    }
+  }
+  // Without timer queries the frame's CPU time is the measure, taken now.
+  void StopFrameTimer(vtkGlobeMapper* self)
+  {
+    if (!vtkOpenGLRenderTimer::IsSupported())
+    {
+      if (this->FrameStart >= 0.0)
+      {
+        (this->Interactive ? self->InteractiveDetailTime : self->FullDetailTime) =
+          vtkTimerLog::GetUniversalTime() - this->FrameStart;
+      }
+      this->FrameStart = -1.0;
+      return;
+    }
+    if (!this->FrameTimers.empty() && !this->FrameTimers.back().first->Stopped())
+    {
+      this->FrameTimers.back().first->Stop();
+    }
+  }
+  // The finished frames' times, oldest first.
+  void CollectFrameTimes(vtkGlobeMapper* self)
+  {
+    while (!this->FrameTimers.empty() && this->FrameTimers.front().first->Stopped() &&
+      this->FrameTimers.front().first->Ready())
+    {
+      auto& front = this->FrameTimers.front();
+      (front.second ? self->InteractiveDetailTime : self->FullDetailTime) =
+        front.first->GetElapsedSeconds();
+      front.first->ReleaseGraphicsResources();
+      this->FrameTimers.pop_front();
+    }
+  }
 
   // Minimum reduction.
   std::vector<vtkSmartPointer<vtkTextureObject>> ReductionLevels;
@@ -277,8 +344,9 @@ void vtkGlobeMapper::SetGridResolution(int resolution)
 {
   // Above 2048 the index buffer alone would take more than 100 MB.
   resolution = std::max(2, std::min(resolution, 2048));
-  if (resolution != this->Internals->GridPass->GetResolution() || this->GridPixelsPerCell != 0.0)
+  if (resolution != this->Internals->FixedResolution || this->GridPixelsPerCell != 0.0)
   {
+    this->Internals->FixedResolution = resolution;
     this->Internals->GridPass->SetResolution(resolution);
     this->GridPixelsPerCell = 0.0;
     this->Modified();
@@ -585,12 +653,16 @@ void vtkGlobeMapper::ReleaseGraphicsResources(vtkWindow* window)
     in.GFramebuffer = nullptr;
   }
   in.VAO->ReleaseGraphicsResources();
-  if (in.Indices)
+  for (auto& indices : in.Indices)
   {
-    in.Indices->ReleaseGraphicsResources();
-    in.Indices = nullptr;
+    indices.Buffer->ReleaseGraphicsResources();
   }
-  in.IndexResolution = 0;
+  in.Indices.clear();
+  for (auto& timer : in.FrameTimers)
+  {
+    timer.first->ReleaseGraphicsResources();
+  }
+  in.FrameTimers.clear();
   for (auto& t : in.ReductionLevels)
   {
     t->ReleaseGraphicsResources(window);
@@ -788,6 +860,12 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   }
 
   this->CollectReduction();
+  // Interactive detail: a frame allocated less time than the last full-detail frame took.
+  in.CollectFrameTimes(this);
+  in.Interactive = this->AutoAdjustDetail && this->FullDetailTime > 0.0 &&
+    act->GetAllocatedRenderTime() < this->FullDetailTime;
+  this->LastFrameInteractive = in.Interactive;
+  in.Composite->SetRefinementSuspended(in.Interactive);
   in.UpdateLayers();
   const bool streaming = in.Layers->GetNumberOfStreamedLayers() > 0;
   if (in.Feedback->IsPending())
@@ -883,8 +961,10 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     const double* u = camera->GetViewUp();
     in.RenderedView = { p[0], p[1], p[2], f[0], f[1], f[2], u[0], u[1], u[2],
       camera->GetViewAngle(), static_cast<double>(width), static_cast<double>(height),
-      static_cast<double>(act->GetMTime()) };
+      static_cast<double>(act->GetMTime()), in.Interactive ? 1.0 : 0.0 };
   }
+  // The globe's GPU time, grid to composition, for the next frames' level of detail.
+  in.StartFrameTimer();
   in.GridPass->Render(&renderState);
   if (!this->RenderGBuffer(ren, act, width, height))
   {
@@ -985,6 +1065,7 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     levels && in.ReductionLevels.size() > 1 ? in.ReductionLevels[1].Get() : nullptr, 16);
   in.Composite->Render(&renderState);
   in.Composite->SetCoverage(nullptr, 0);
+  in.StopFrameTimer(this);
   this->LastFrameDrewGlobe = true;
   in.PrimaryHeight = primaryHeight;
 }
@@ -992,23 +1073,28 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
 //------------------------------------------------------------------------------
 void vtkGlobeMapper::FitGrid(vtkRenderer* ren, vtkActor* act, int width, int height)
 {
+  auto& in = *this->Internals;
+  const double coarsening = in.Interactive ? this->InteractiveGridCoarsening : 1.0;
   if (!(this->GridPixelsPerCell > 0.0))
   {
-    return; // a fixed GridResolution
+    // A fixed GridResolution (divided at interactive detail).
+    in.GridPass->SetResolution(
+      std::max(2, static_cast<int>(std::ceil(in.FixedResolution / coarsening))));
+    return;
   }
+  const double pixelsPerCell = this->GridPixelsPerCell * coarsening;
   // The grid follows the viewport (not Modified(): a window resize rebuilds nothing else), or
   // the grid's own span on screen where that is shorter (the whole planet in part of the
   // window), rounded up to 16 points so that nearby views share a size.
-  auto& in = *this->Internals;
   const double side = std::max(width, height);
-  const double windowPoints = std::ceil(side / this->GridPixelsPerCell);
+  const double windowPoints = std::ceil(side / pixelsPerCell);
   double points = windowPoints;
   const double span = in.Grid->ComputeSamplingSpan(
     ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1),
     act->GetMatrix(), width, height);
   if (span < side)
   {
-    points = std::min(windowPoints, 16.0 * std::ceil(span / this->GridPixelsPerCell / 16.0));
+    points = std::min(windowPoints, 16.0 * std::ceil(span / pixelsPerCell / 16.0));
   }
   in.GridPass->SetResolution(static_cast<int>(std::max(2.0, std::min(points, 2048.0))));
 }
@@ -1088,10 +1174,21 @@ bool vtkGlobeMapper::RenderGBuffer(vtkRenderer* ren, vtkActor* act, int width, i
   in.GBuffer->Resize(width, height);
   in.GDepth->Resize(width, height);
 
-  // The mesh's indices, rebuilt only when the grid resolution changes.
+  // The mesh's indices, built only for a grid size not drawn in the last two.
   const int n = in.GridPass->GetResolution();
-  if (!in.Indices || in.IndexResolution != n)
+  auto cached = std::find_if(in.Indices.begin(), in.Indices.end(),
+    [n](const vtkInternals::GridIndices& g) { return g.Resolution == n; });
+  if (cached != in.Indices.end())
   {
+    std::rotate(in.Indices.begin(), cached, cached + 1);
+  }
+  else
+  {
+    if (in.Indices.size() >= 2)
+    {
+      in.Indices.back().Buffer->ReleaseGraphicsResources();
+      in.Indices.pop_back();
+    }
     std::vector<unsigned int> indices;
     indices.reserve(static_cast<size_t>(n - 1) * (n - 1) * 6);
     for (int j = 0; j + 1 < n; ++j)
@@ -1102,11 +1199,13 @@ bool vtkGlobeMapper::RenderGBuffer(vtkRenderer* ren, vtkActor* act, int width, i
         indices.insert(indices.end(), { a, b, d, a, d, c });
       }
     }
-    in.Indices = vtkSmartPointer<vtkOpenGLBufferObject>::New();
-    in.Indices->SetType(vtkOpenGLBufferObject::ElementArrayBuffer);
-    in.Indices->Upload(indices, vtkOpenGLBufferObject::ElementArrayBuffer);
-    in.IndexCount = indices.size();
-    in.IndexResolution = n;
+    vtkInternals::GridIndices grid;
+    grid.Resolution = n;
+    grid.Buffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+    grid.Buffer->SetType(vtkOpenGLBufferObject::ElementArrayBuffer);
+    grid.Buffer->Upload(indices, vtkOpenGLBufferObject::ElementArrayBuffer);
+    grid.Count = indices.size();
+    in.Indices.insert(in.Indices.begin(), grid);
   }
 
   const bool highPrecision = in.Layers->GetHighPrecisionGeodetic();
@@ -1265,9 +1364,10 @@ bool vtkGlobeMapper::RenderGBuffer(vtkRenderer* ren, vtkActor* act, int width, i
   }
 
   in.VAO->Bind();
-  in.Indices->Bind();
-  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(in.IndexCount), GL_UNSIGNED_INT, nullptr);
-  in.Indices->Release();
+  in.Indices.front().Buffer->Bind();
+  glDrawElements(
+    GL_TRIANGLES, static_cast<GLsizei>(in.Indices.front().Count), GL_UNSIGNED_INT, nullptr);
+  in.Indices.front().Buffer->Release();
   in.VAO->Release();
 
   grid->GetHeightTexture()->Deactivate();
@@ -1404,6 +1504,11 @@ void vtkGlobeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GridResolution: " << this->GetGridResolution() << " ("
      << (this->GridPixelsPerCell > 0.0 ? "following the window" : "fixed") << ")\n";
   os << indent << "GridPixelsPerCell: " << this->GridPixelsPerCell << "\n";
+  os << indent << "AutoAdjustDetail: " << this->AutoAdjustDetail
+     << " (interactive grid coarsening " << this->InteractiveGridCoarsening << ")\n";
+  os << indent << "LastFrameInteractive: " << this->LastFrameInteractive << "\n";
+  os << indent << "FullDetailTime: " << this->FullDetailTime
+     << " s, InteractiveDetailTime: " << this->InteractiveDetailTime << " s\n";
   os << indent << "Layers: " << in.Layers->GetNumberOfLayers() << "\n";
   os << indent << "HighPrecisionGeodetic: " << this->GetHighPrecisionGeodetic() << "\n";
   os << indent << "FootprintFiltering: " << this->GetFootprintFiltering() << "\n";

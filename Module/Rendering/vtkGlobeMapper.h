@@ -122,8 +122,9 @@ public:
    * ridges the grid misses are not found by the refinement (Documentation/accuracy-vs-time.md
    * "Defaults chosen from it"). SetGridResolution fixes the size instead (points per
    * side, clamped to 2..2048; GridPixelsPerCell becomes 0); SetGridPixelsPerCell(p > 0) makes
-   * it follow the window again. GetGridResolution is the size in use: the last frame's, or
-   * before the first frame the fixed size (512 unless set).
+   * it follow the window again. GetGridResolution is the size in use: the last frame's (coarser
+   * after a frame at interactive detail, AutoAdjustDetail), or before the first frame the
+   * fixed size (512 unless set).
    */
   void SetGridResolution(int resolution);
   int GetGridResolution();
@@ -232,6 +233,33 @@ public:
 
   ///@{
   /**
+   * Interactive detail (Documentation/rendering.md "Interactive detail"), VTK's way of keeping
+   * interaction fluid (vtkLODActor, the volume mappers' AutoAdjustSampleDistances): with
+   * AutoAdjustDetail on (the default), a frame whose allocated render time is shorter than the
+   * GPU time of the globe's last full-detail frame (FullDetailTime) is drawn at interactive
+   * detail: the grid InteractiveGridCoarsening times coarser (default 2; the automatic grid's
+   * pixels per cell, or the fixed size, divided) and no terrain refinement. The allocated time
+   * comes from vtkRenderWindow's DesiredUpdateRate: interactor styles raise it while the camera
+   * moves (vtkRenderWindowInteractor's DesiredUpdateRate, 15 frames/s) and lower it when the
+   * move ends (StillUpdateRate), with a last, still render; a window whose rate is never set
+   * (0.0001/s: batch images, tests, offscreen) always renders full detail. The still frame
+   * after a move is the picture an unmoved camera shows, and switching levels compiles
+   * nothing after the first switch. FullDetailTime and InteractiveDetailTime (s) are the
+   * last measured frame of each level (GPU timer queries; 0 until measured; without timer
+   * queries, the CPU time of RenderPiece).
+   */
+  vtkSetMacro(AutoAdjustDetail, bool);
+  vtkGetMacro(AutoAdjustDetail, bool);
+  vtkBooleanMacro(AutoAdjustDetail, bool);
+  vtkSetClampMacro(InteractiveGridCoarsening, double, 1.0, 16.0);
+  vtkGetMacro(InteractiveGridCoarsening, double);
+  vtkGetMacro(LastFrameInteractive, bool);
+  vtkGetMacro(FullDetailTime, double);
+  vtkGetMacro(InteractiveDetailTime, double);
+  ///@}
+
+  ///@{
+  /**
    * Layers filtered to each grid point's and pixel's footprint (default on;
    * Documentation/composition.md "Filtering to the footprint"): distant terrain does not alias
    * or shimmer. Off: whole-raster layers are read at level 0 whatever the footprint (each value
@@ -318,6 +346,11 @@ protected:
   vtkTextureObject* GetGBufferDepthTexture();
 
   double GridPixelsPerCell = 1.6; // 0: the fixed GridResolution
+  bool AutoAdjustDetail = true;
+  double InteractiveGridCoarsening = 2.0;
+  bool LastFrameInteractive = false;
+  double FullDetailTime = 0.0;
+  double InteractiveDetailTime = 0.0;
 
   bool RenderGBuffer(vtkRenderer* ren, vtkActor* act, int width, int height);
   // The automatic grid's size for the view just cast (GridPixelsPerCell).

@@ -43,6 +43,7 @@ list(APPEND globe_rendering_tests
   TestGlobeSatelliteLimb.cxx
   TestGlobeTerrainRefinement.cxx
   TestGlobeTemporalStability.cxx
+  TestGlobeInteractiveDetail.cxx
   TestGlobeFeatherReach.cxx
   TestGlobeColorMatch.cxx)
 # Insets without walls: the rendered slope across the SRTM insets' borders against the data's.
