@@ -345,6 +345,9 @@ void vtkGlobeRepresentation::ApplyGlobeSettings(bool all)
       case RefinementSetting:
         mapper->SetTerrainRefinement(this->TerrainRefinement);
         break;
+      case DetailSetting:
+        mapper->SetAutoAdjustDetail(this->AutoAdjustDetail);
+        break;
       case LightingSetting:
         mapper->SetLighting(this->Lighting);
         break;
@@ -378,6 +381,7 @@ void vtkGlobeRepresentation::ApplyGlobeSettings(bool all)
 vtkGlobeGlobeSetting(Body, int, BodySetting);
 vtkGlobeGlobeSetting(GridPixelsPerCell, double, GridSetting);
 vtkGlobeGlobeSetting(TerrainRefinement, int, RefinementSetting);
+vtkGlobeGlobeSetting(AutoAdjustDetail, bool, DetailSetting);
 vtkGlobeGlobeSetting(Lighting, bool, LightingSetting);
 vtkGlobeGlobeSetting(Atmosphere, bool, AtmosphereSetting);
 vtkGlobeGlobeSetting(Graticule, bool, GraticuleSetting);
@@ -462,6 +466,7 @@ void vtkGlobeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Body: " << this->Body << "\n";
   os << indent << "GridPixelsPerCell: " << this->GridPixelsPerCell << "\n";
   os << indent << "TerrainRefinement: " << this->TerrainRefinement << "\n";
+  os << indent << "AutoAdjustDetail: " << this->AutoAdjustDetail << "\n";
   os << indent << "Lighting: " << this->Lighting << "\n";
   os << indent << "Atmosphere: " << this->Atmosphere << "\n";
   os << indent << "Graticule: " << this->Graticule << "\n";

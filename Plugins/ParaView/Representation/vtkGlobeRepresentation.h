@@ -65,7 +65,8 @@ public:
   ///@{
   /**
    * The view's globe: Body 0 is WGS 84, 1 the Moon, 2 Mars; the mapper's GridPixelsPerCell,
-   * TerrainRefinement and effects (Lighting, Atmosphere, Graticule, NightLights,
+   * TerrainRefinement, AutoAdjustDetail (ParaView's interactive renders ask for 5 frames/s)
+   * and effects (Lighting, Atmosphere, Graticule, NightLights,
    * SpecularWater, Contours).
    */
   void SetBody(int body);
@@ -74,6 +75,8 @@ public:
   vtkGetMacro(GridPixelsPerCell, double);
   void SetTerrainRefinement(int steps);
   vtkGetMacro(TerrainRefinement, int);
+  void SetAutoAdjustDetail(bool on);
+  vtkGetMacro(AutoAdjustDetail, bool);
   void SetLighting(bool on);
   vtkGetMacro(Lighting, bool);
   void SetAtmosphere(bool on);
@@ -95,6 +98,7 @@ public:
     BodySetting,
     GridSetting,
     RefinementSetting,
+    DetailSetting,
     LightingSetting,
     AtmosphereSetting,
     GraticuleSetting,
@@ -125,6 +129,7 @@ protected:
   int Body = 0;
   double GridPixelsPerCell = 1.6;
   int TerrainRefinement = 1;
+  bool AutoAdjustDetail = true; // as vtkGlobeMapper
   bool Lighting = true; // as vtkGlobeMapper
   bool Atmosphere = false;
   bool Graticule = false;

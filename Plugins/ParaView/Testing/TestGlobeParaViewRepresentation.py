@@ -11,6 +11,8 @@
   nothing; opacity 1 gives the first picture back.
 - The globe's settings, set on either representation, reach the view's one globe: GlobeBody
   "Moon" shrinks it, GlobeGraticule draws lines, and back to WGS 84 the first picture returns.
+- Interactive detail: an interactive render asks VTK for 5 frames/s, the still render after
+  it gives the first picture back, and GlobeAutoAdjustDetail reaches the globe.
 - Bad input: a 3D image (a wavelet) shown as Globe is refused with an error and the picture is
   unchanged; deleting its representation removes its layer.
 """
@@ -123,6 +125,26 @@ expect(0.05 < ratio < 0.4 and lines > 200 and abs(moon_again - ratio) < 0.05 and
        "GlobeBody Moon: %.2f of the Earth's pixels (the cone and slice stay); GlobeGraticule set "
        "on the other representation draws lines (%d values change) on the Moon (%.2f); back to "
        "WGS 84, the first picture" % (ratio, lines, moon_again))
+
+# Interactive detail: ParaView's interactive renders ask VTK for 5 frames/s (still renders
+# 0.002/s), the budget vtkGlobeMapper::AutoAdjustDetail spends; the still render after one gives
+# the first picture back, and GlobeAutoAdjustDetail reaches the view's globe.
+window = view.GetClientSideObject().GetRenderWindow()
+globe_mapper = [a.GetMapper() for a in renderer.GetActors()
+                if a.GetMapper() and a.GetMapper().GetClassName() == "vtkGlobeMapper"][0]
+view.SMProxy.InteractiveRender()
+rate = window.GetDesiredUpdateRate()
+Render(view)
+after, _ = shot(view, "globe-after-interaction.png")
+heights.GlobeAutoAdjustDetail = 0
+Render(view)
+off = "AutoAdjustDetail: 0" in str(globe_mapper)
+heights.GlobeAutoAdjustDetail = 1
+Render(view)
+expect(rate == 5.0 and globe_scene.image_error(after, first) == 0.0 and off and
+       "AutoAdjustDetail: 1" in str(globe_mapper),
+       "an interactive render asks for %g frames/s (5); the still render after it is the first "
+       "picture; GlobeAutoAdjustDetail off and on reach the globe" % rate)
 
 # Bad input: a 3D image data set shown as Globe is refused with an error naming the problem,
 # and the rest of the scene renders as before.
