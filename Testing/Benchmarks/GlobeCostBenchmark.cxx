@@ -13,6 +13,9 @@
 //           Data/earth layers in the whole-Earth and the Rainier views.
 //  grid     the automatic grid (GridPixelsPerCell 1.6) at 400 x 300, 800 x 600 and 1600 x 1200
 //           at Rainier, with a fixed 512^2 grid in the same windows.
+//  interactive  the frames an interactor draws while the camera moves (AutoAdjustDetail: the
+//           window's rate set to 1e6/s, so that no frame meets it) against still frames, at
+//           Rainier in the same three windows.
 //
 // usage: GlobeCostBenchmark [--frames N] [--rounds R] [--json PATH] [--only NAME]
 // Run it with GLIBC_TUNABLES=glibc.malloc.mmap_threshold=268435456:glibc.malloc.trim_threshold=536870912
@@ -251,6 +254,20 @@ std::vector<Config> MakeConfigs(const std::string& only)
     add("grid", "rainier", "fixed 512^2", [](vtkGlobeTest::Scene& s) { s.AddEarthLayers(); }, w,
       w * 3 / 4);
   }
+  for (const int w : { 400, 800, 1600 })
+  {
+    add("interactive", "rainier", "still (full detail)", [](vtkGlobeTest::Scene& s) {
+      s.AddEarthLayers();
+      s.Mapper->SetGridPixelsPerCell(1.6);
+    }, w, w * 3 / 4);
+    // The first frames, before the full-detail frame is measured, are full detail: the
+    // rounds' medians leave them out.
+    add("interactive", "rainier", "moving (interactive detail)", [](vtkGlobeTest::Scene& s) {
+      s.AddEarthLayers();
+      s.Mapper->SetGridPixelsPerCell(1.6);
+      s.Window->SetDesiredUpdateRate(1e6);
+    }, w, w * 3 / 4);
+  }
   return configs;
 }
 } // namespace
@@ -279,7 +296,7 @@ int main(int argc, char* argv[])
     }
     else
     {
-      std::printf("usage: %s [--frames N] [--rounds R] [--json PATH] [--only layers|raster|filtering|grid]\n"
+      std::printf("usage: %s [--frames N] [--rounds R] [--json PATH] [--only layers|raster|filtering|grid|interactive]\n"
                   "  What the frame costs against what it shows: out-of-view insets, the data's\n"
                   "  size, the automatic grid (see the comment at the top of the source).\n",
         argv[0]);
@@ -323,7 +340,7 @@ int main(int argc, char* argv[])
   {
     const Config& c = configs[i];
     const bool newGroup = !first || first->Section != c.Section || first->Scene != c.Scene ||
-      (c.Section == "grid" && first->Width != c.Width) ||
+      ((c.Section == "grid" || c.Section == "interactive") && first->Width != c.Width) ||
       (c.Section == "filtering" &&
         c.Label.substr(0, c.Label.find(',')) != first->Label.substr(0, first->Label.find(',')));
     if (newGroup)
