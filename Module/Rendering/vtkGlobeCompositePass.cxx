@@ -25,8 +25,8 @@
 
 #include <array>
 #include <cmath>
-#include <vector>
 #include <utility>
+#include <vector>
 
 vtkStandardNewMacro(vtkGlobeCompositePass);
 

@@ -19,22 +19,13 @@
 #include "vtkCommand.h"
 #include "vtkGenericRenderWindowInteractor.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
 namespace
 {
-int Differing(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)
-{
-  int pixels = 0;
-  for (size_t i = 0; i + 2 < a.size() && i + 2 < b.size(); i += 3)
-  {
-    pixels += (a[i] != b[i] || a[i + 1] != b[i + 1] || a[i + 2] != b[i + 2]) ? 1 : 0;
-  }
-  return pixels;
-}
-
 // Mean absolute difference per channel (0..255) over the pixels both frames cover, and the
 // pixels one frame covers and the other does not (background black).
 void Compare(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b,
@@ -126,7 +117,7 @@ int TestGlobeInteractiveDetail(int, char*[])
     vtkGlobeTest::Printf("the interactive picture: %d px differ from the still one, mean "
                          "difference %.2f of 255 where both show terrain (< 3), coverage differs "
                          "at %d px (<= 0.5 %%)",
-      Differing(still, interactive), mean, coverage));
+      vtkGlobeTest::DifferingPixels(still, interactive), mean, coverage));
   for (int frame = 0; frame < 20 && !(mapper->GetInteractiveDetailTime() > 0.0); ++frame)
   {
     scene.Window->Render();
@@ -147,7 +138,7 @@ int TestGlobeInteractiveDetail(int, char*[])
     const std::vector<unsigned char> first = vtkGlobeTest::ReadPixels(scene.Window);
     scene.Window->Render();
     const std::vector<unsigned char> second = vtkGlobeTest::ReadPixels(scene.Window);
-    worst = std::max(worst, std::max(Differing(still, first), Differing(first, second)));
+    worst = std::max(worst, std::max(vtkGlobeTest::DifferingPixels(still, first), vtkGlobeTest::DifferingPixels(first, second)));
     scene.Window->SetDesiredUpdateRate(1e6);
     scene.Window->Render();
     levels = levels && full && mapper->GetLastFrameInteractive() &&
@@ -164,10 +155,10 @@ int TestGlobeInteractiveDetail(int, char*[])
   scene.Window->Render();
   const std::vector<unsigned char> off = vtkGlobeTest::ReadPixels(scene.Window);
   check.Expect(!mapper->GetLastFrameInteractive() && mapper->GetGridResolution() == fullGrid &&
-      Differing(still, off) == 0,
+      vtkGlobeTest::DifferingPixels(still, off) == 0,
     vtkGlobeTest::Printf("AutoAdjustDetailOff at the same rate: full detail, %d px differ from "
                          "the still picture",
-      Differing(still, off)));
+      vtkGlobeTest::DifferingPixels(still, off)));
   mapper->AutoAdjustDetailOn();
 
   // A fixed grid is halved (rounded up).
@@ -210,9 +201,9 @@ int TestGlobeInteractiveDetail(int, char*[])
   scene.Window->Render();
   const std::vector<unsigned char> next = vtkGlobeTest::ReadPixels(scene.Window);
   check.Expect(log.Moves == 4 && log.InteractiveMoves == 4 && stillAfterDrag &&
-      Differing(afterDrag, next) == 0 && Differing(still, afterDrag) > 0,
+      vtkGlobeTest::DifferingPixels(afterDrag, next) == 0 && vtkGlobeTest::DifferingPixels(still, afterDrag) > 0,
     vtkGlobeTest::Printf("a drag of %d moves: %d drawn at interactive detail; the release "
                          "renders full detail %d; the next frame differs at %d px (0)",
-      log.Moves, log.InteractiveMoves, stillAfterDrag ? 1 : 0, Differing(afterDrag, next)));
+      log.Moves, log.InteractiveMoves, stillAfterDrag ? 1 : 0, vtkGlobeTest::DifferingPixels(afterDrag, next)));
   return check.Result();
 }

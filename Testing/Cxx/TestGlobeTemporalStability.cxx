@@ -9,20 +9,8 @@
 #include "vtkGlobeRenderingTestHelpers.h"
 #include "vtkGlobeTestHelpers.h"
 
+#include <algorithm>
 #include <cstdio>
-
-namespace
-{
-int Differing(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)
-{
-  int pixels = 0;
-  for (size_t i = 0; i + 2 < a.size() && i + 2 < b.size(); i += 3)
-  {
-    pixels += (a[i] != b[i] || a[i + 1] != b[i + 1] || a[i + 2] != b[i + 2]) ? 1 : 0;
-  }
-  return pixels;
-}
-} // namespace
 
 int TestGlobeTemporalStability(int, char*[])
 {
@@ -56,7 +44,7 @@ int TestGlobeTemporalStability(int, char*[])
     const std::vector<unsigned char> second = vtkGlobeTest::ReadPixels(scene.Window);
     scene.Window->Render();
     const std::vector<unsigned char> third = vtkGlobeTest::ReadPixels(scene.Window);
-    const int d12 = Differing(first, second), d23 = Differing(second, third);
+    const int d12 = vtkGlobeTest::DifferingPixels(first, second), d23 = vtkGlobeTest::DifferingPixels(second, third);
     worst = std::max(worst, std::max(d12, d23));
     check.Expect(d12 == 0 && d23 == 0 && scene.Mapper->GetLastFrameDrewGlobe(),
       vtkGlobeTest::Printf("%-30s frame 1 -> 2: %d px differ, 2 -> 3: %d px (%d recast)",

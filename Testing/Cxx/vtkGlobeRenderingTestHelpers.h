@@ -467,6 +467,17 @@ inline std::vector<unsigned char> ReadPixels(vtkRenderWindow* window)
   return rgb;
 }
 
+/// How many pixels of two ReadPixels frames differ in colour.
+inline int DifferingPixels(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)
+{
+  int pixels = 0;
+  for (size_t i = 0; i + 2 < a.size() && i + 2 < b.size(); i += 3)
+  {
+    pixels += (a[i] != b[i] || a[i + 1] != b[i + 1] || a[i + 2] != b[i + 2]) ? 1 : 0;
+  }
+  return pixels;
+}
+
 /// Two frames of one window (ReadPixels and ReadDepth of each): how many pixels differ in
 /// colour and how many in depth.
 inline void CountDifferences(const std::vector<unsigned char>& imageA,
