@@ -156,6 +156,7 @@ set(globe_streamed_tests
   TestGlobeProjectedLayers
   TestGlobeNorthPole
   TestGlobeTemporalStability
+  TestGlobeInteractiveDetail
   TestGlobeInsetWalls)
 foreach (test_name IN LISTS globe_streamed_tests)
   add_test(NAME "Streamed.${test_name}"
