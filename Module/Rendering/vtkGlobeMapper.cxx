@@ -87,14 +87,14 @@ public:
   };
   std::vector<GridIndices> Indices;
 
-  // Interactive detail: this frame's level, the fixed grid size it divides, and the GPU
-  // timers of the last frames with the level each drew (read when done; none waits).
-  bool Interactive = false;
+  // Interactive detail (the frame's level is the mapper's LastFrameInteractive): the fixed grid
+  // size it divides, and the GPU timers of the last frames with the level each drew (read when
+  // done; none waits).
   int FixedResolution = 512;
   std::deque<std::pair<std::unique_ptr<vtkOpenGLRenderTimer>, bool>> FrameTimers;
   double FrameStart = -1.0; // CPU clock without timer queries (s)
 
-  void StartFrameTimer()
+  void StartFrameTimer(vtkGlobeMapper* self)
   {
     if (!vtkOpenGLRenderTimer::IsSupported())
     {
@@ -108,7 +108,7 @@ public:
     }
     if (this->FrameTimers.size() < 8)
     {
-      this->FrameTimers.emplace_back(new vtkOpenGLRenderTimer, this->Interactive);
+      this->FrameTimers.emplace_back(new vtkOpenGLRenderTimer, self->LastFrameInteractive);
       this->FrameTimers.back().first->Start();
     }
   }
@@ -119,7 +119,7 @@ public:
     {
       if (this->FrameStart >= 0.0)
       {
-        (this->Interactive ? self->InteractiveDetailTime : self->FullDetailTime) =
+        (self->LastFrameInteractive ? self->InteractiveDetailTime : self->FullDetailTime) =
           vtkTimerLog::GetUniversalTime() - this->FrameStart;
       }
       this->FrameStart = -1.0;
@@ -862,10 +862,9 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   this->CollectReduction();
   // Interactive detail: a frame allocated less time than the last full-detail frame took.
   in.CollectFrameTimes(this);
-  in.Interactive = this->AutoAdjustDetail && this->FullDetailTime > 0.0 &&
+  this->LastFrameInteractive = this->AutoAdjustDetail && this->FullDetailTime > 0.0 &&
     act->GetAllocatedRenderTime() < this->FullDetailTime;
-  this->LastFrameInteractive = in.Interactive;
-  in.Composite->SetRefinementSuspended(in.Interactive);
+  in.Composite->SetRefinementSuspended(this->LastFrameInteractive);
   in.UpdateLayers();
   const bool streaming = in.Layers->GetNumberOfStreamedLayers() > 0;
   if (in.Feedback->IsPending())
@@ -961,10 +960,10 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     const double* u = camera->GetViewUp();
     in.RenderedView = { p[0], p[1], p[2], f[0], f[1], f[2], u[0], u[1], u[2],
       camera->GetViewAngle(), static_cast<double>(width), static_cast<double>(height),
-      static_cast<double>(act->GetMTime()), in.Interactive ? 1.0 : 0.0 };
+      static_cast<double>(act->GetMTime()), this->LastFrameInteractive ? 1.0 : 0.0 };
   }
   // The globe's GPU time, grid to composition, for the next frames' level of detail.
-  in.StartFrameTimer();
+  in.StartFrameTimer(this);
   in.GridPass->Render(&renderState);
   if (!this->RenderGBuffer(ren, act, width, height))
   {
@@ -1074,7 +1073,7 @@ void vtkGlobeMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
 void vtkGlobeMapper::FitGrid(vtkRenderer* ren, vtkActor* act, int width, int height)
 {
   auto& in = *this->Internals;
-  const double coarsening = in.Interactive ? this->InteractiveGridCoarsening : 1.0;
+  const double coarsening = this->LastFrameInteractive ? this->InteractiveGridCoarsening : 1.0;
   if (!(this->GridPixelsPerCell > 0.0))
   {
     // A fixed GridResolution (divided at interactive detail).

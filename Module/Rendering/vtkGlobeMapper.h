@@ -243,16 +243,17 @@ public:
    * moves (vtkRenderWindowInteractor's DesiredUpdateRate, 15 frames/s) and lower it when the
    * move ends (StillUpdateRate), with a last, still render; a window whose rate is never set
    * (0.0001/s: batch images, tests, offscreen) always renders full detail. The still frame
-   * after a move is the picture an unmoved camera shows, and switching levels compiles
-   * nothing after the first switch. FullDetailTime and InteractiveDetailTime (s) are the
-   * last measured frame of each level (GPU timer queries; 0 until measured; without timer
-   * queries, the CPU time of RenderPiece).
+   * after a move is final (it reads its own reduction back, as any new view does), and
+   * switching levels compiles nothing after the first switch. FullDetailTime and
+   * InteractiveDetailTime (s) are the last measured frame of each level (GPU timer queries;
+   * 0 until measured; without timer queries, the CPU time of RenderPiece).
    */
   vtkSetMacro(AutoAdjustDetail, bool);
   vtkGetMacro(AutoAdjustDetail, bool);
   vtkBooleanMacro(AutoAdjustDetail, bool);
   vtkSetClampMacro(InteractiveGridCoarsening, double, 1.0, 16.0);
   vtkGetMacro(InteractiveGridCoarsening, double);
+  /// The level of the last frame (set as the frame starts, from its allocated time).
   vtkGetMacro(LastFrameInteractive, bool);
   vtkGetMacro(FullDetailTime, double);
   vtkGetMacro(InteractiveDetailTime, double);

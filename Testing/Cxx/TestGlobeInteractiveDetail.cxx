@@ -71,6 +71,7 @@ void OnInteraction(vtkObject*, unsigned long, void* data, void*)
 int TestGlobeInteractiveDetail(int, char*[])
 {
   vtkGlobeTest::Checklist check;
+  const auto Differing = vtkGlobeTest::DifferingPixels;
   const int width = 400, height = 300;
   vtkGlobeTest::Scene scene(width, height);
   scene.AddEarthLayers();
@@ -117,7 +118,7 @@ int TestGlobeInteractiveDetail(int, char*[])
     vtkGlobeTest::Printf("the interactive picture: %d px differ from the still one, mean "
                          "difference %.2f of 255 where both show terrain (< 3), coverage differs "
                          "at %d px (<= 0.5 %%)",
-      vtkGlobeTest::DifferingPixels(still, interactive), mean, coverage));
+      Differing(still, interactive), mean, coverage));
   for (int frame = 0; frame < 20 && !(mapper->GetInteractiveDetailTime() > 0.0); ++frame)
   {
     scene.Window->Render();
@@ -138,7 +139,7 @@ int TestGlobeInteractiveDetail(int, char*[])
     const std::vector<unsigned char> first = vtkGlobeTest::ReadPixels(scene.Window);
     scene.Window->Render();
     const std::vector<unsigned char> second = vtkGlobeTest::ReadPixels(scene.Window);
-    worst = std::max(worst, std::max(vtkGlobeTest::DifferingPixels(still, first), vtkGlobeTest::DifferingPixels(first, second)));
+    worst = std::max(worst, std::max(Differing(still, first), Differing(first, second)));
     scene.Window->SetDesiredUpdateRate(1e6);
     scene.Window->Render();
     levels = levels && full && mapper->GetLastFrameInteractive() &&
@@ -155,10 +156,10 @@ int TestGlobeInteractiveDetail(int, char*[])
   scene.Window->Render();
   const std::vector<unsigned char> off = vtkGlobeTest::ReadPixels(scene.Window);
   check.Expect(!mapper->GetLastFrameInteractive() && mapper->GetGridResolution() == fullGrid &&
-      vtkGlobeTest::DifferingPixels(still, off) == 0,
+      Differing(still, off) == 0,
     vtkGlobeTest::Printf("AutoAdjustDetailOff at the same rate: full detail, %d px differ from "
                          "the still picture",
-      vtkGlobeTest::DifferingPixels(still, off)));
+      Differing(still, off)));
   mapper->AutoAdjustDetailOn();
 
   // A fixed grid is halved (rounded up).
@@ -201,9 +202,9 @@ int TestGlobeInteractiveDetail(int, char*[])
   scene.Window->Render();
   const std::vector<unsigned char> next = vtkGlobeTest::ReadPixels(scene.Window);
   check.Expect(log.Moves == 4 && log.InteractiveMoves == 4 && stillAfterDrag &&
-      vtkGlobeTest::DifferingPixels(afterDrag, next) == 0 && vtkGlobeTest::DifferingPixels(still, afterDrag) > 0,
+      Differing(afterDrag, next) == 0 && Differing(still, afterDrag) > 0,
     vtkGlobeTest::Printf("a drag of %d moves: %d drawn at interactive detail; the release "
                          "renders full detail %d; the next frame differs at %d px (0)",
-      log.Moves, log.InteractiveMoves, stillAfterDrag ? 1 : 0, vtkGlobeTest::DifferingPixels(afterDrag, next)));
+      log.Moves, log.InteractiveMoves, stillAfterDrag ? 1 : 0, Differing(afterDrag, next)));
   return check.Result();
 }

@@ -44,7 +44,8 @@ int TestGlobeTemporalStability(int, char*[])
     const std::vector<unsigned char> second = vtkGlobeTest::ReadPixels(scene.Window);
     scene.Window->Render();
     const std::vector<unsigned char> third = vtkGlobeTest::ReadPixels(scene.Window);
-    const int d12 = vtkGlobeTest::DifferingPixels(first, second), d23 = vtkGlobeTest::DifferingPixels(second, third);
+    const int d12 = vtkGlobeTest::DifferingPixels(first, second);
+    const int d23 = vtkGlobeTest::DifferingPixels(second, third);
     worst = std::max(worst, std::max(d12, d23));
     check.Expect(d12 == 0 && d23 == 0 && scene.Mapper->GetLastFrameDrewGlobe(),
       vtkGlobeTest::Printf("%-30s frame 1 -> 2: %d px differ, 2 -> 3: %d px (%d recast)",

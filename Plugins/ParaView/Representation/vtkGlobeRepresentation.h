@@ -66,8 +66,7 @@ public:
   /**
    * The view's globe: Body 0 is WGS 84, 1 the Moon, 2 Mars; the mapper's GridPixelsPerCell,
    * TerrainRefinement, AutoAdjustDetail (ParaView's interactive renders ask for 5 frames/s)
-   * and effects (Lighting, Atmosphere, Graticule, NightLights,
-   * SpecularWater, Contours).
+   * and effects (Lighting, Atmosphere, Graticule, NightLights, SpecularWater, Contours).
    */
   void SetBody(int body);
   vtkGetMacro(Body, int);
